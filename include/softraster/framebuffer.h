@@ -1,0 +1,68 @@
+// The render target: per-sample RGBA8 color and 32-bit float depth in flat arrays.
+//
+// Sample s of pixel (x, y) lives at index (y * width + x) * samples + s, so the samples of a
+// pixel are adjacent (one cache line for 4x MSAA color) and a single-sampled buffer is a
+// plain image. Colors are stored quantized to 8 bits, as in a GL_RGBA8 attachment.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "softraster/image.h"
+
+namespace softraster {
+
+// floor(255 * clamp(c, 0, 1) + 0.5): the spec's float -> 8-bit conversion. NaN becomes 0.
+inline uint8_t quantize_unorm8(float c) {
+    if (!(c > 0.0f)) return 0;
+    if (c >= 1.0f) return 255;
+    return static_cast<uint8_t>(std::floor(255.0f * c + 0.5f));
+}
+
+inline Rgba8 quantize_rgba8(const glm::vec4& c) {
+    return {quantize_unorm8(c.r), quantize_unorm8(c.g), quantize_unorm8(c.b), quantize_unorm8(c.a)};
+}
+
+class Framebuffer {
+public:
+    static constexpr int kMaxSize = 16384;
+
+    Framebuffer(int width, int height, int samples = 1)
+        : width_(width), height_(height), samples_(samples) {
+        if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize)
+            throw std::invalid_argument("framebuffer size must be 1..16384 in each direction");
+        if (samples != 1 && samples != 4) throw std::invalid_argument("samples must be 1 or 4");
+        const size_t n = size_t(width) * size_t(height) * size_t(samples);
+        color_.resize(n);
+        depth_.resize(n, 1.0f);
+    }
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int samples() const { return samples_; }
+
+    void clear_color(const glm::vec4& c) { std::fill(color_.begin(), color_.end(), quantize_rgba8(c)); }
+    void clear_depth(float z = 1.0f) { std::fill(depth_.begin(), depth_.end(), z); }
+
+    size_t sample_index(int x, int y, int s = 0) const {
+        return (size_t(y) * size_t(width_) + size_t(x)) * size_t(samples_) + size_t(s);
+    }
+    Rgba8* color_data() { return color_.data(); }
+    float* depth_data() { return depth_.data(); }
+    const Rgba8* color_data() const { return color_.data(); }
+    const float* depth_data() const { return depth_.data(); }
+
+    // Single-sampled picture of the buffer: the resolve stage for MSAA (see resolve.h).
+    Image read_pixels() const;
+
+private:
+    int width_, height_, samples_;
+    std::vector<Rgba8> color_;
+    std::vector<float> depth_;
+};
+
+}  // namespace softraster

@@ -1,0 +1,42 @@
+// Stage 4, perspective divide and viewport mapping: clip space -> window space.
+//
+//   ndc = clip.xyz / clip.w
+//   x_w = (ndc.x + 1) / 2 * width
+//   y_w = (1 - ndc.y) / 2 * height     (row 0 is the top row of the picture)
+//   z_w = (ndc.z + 1) / 2              (depth range [0, 1])
+// 1/w is kept: interpolating a/w and 1/w linearly in window space and dividing gives
+// perspective-correct attributes (Heckbert & Moreton 1991; see interpolation.h).
+#pragma once
+#include <array>
+#include <cmath>
+
+#include "softraster/pipeline/vertex_processing.h"
+
+namespace softraster {
+
+template <int N>
+struct WindowVertex {
+    float x = 0, y = 0, z = 0;  // window coordinates, pixels (y down) and depth
+    float inv_w = 1;            // 1 / clip.w
+    std::array<float, N> var{};
+};
+
+struct Viewport {
+    int width = 1, height = 1;
+};
+
+// Returns false for a vertex that cannot be mapped (w <= 0 or a non-finite result); after
+// clipping this only happens with degenerate user matrices, and the primitive is dropped.
+template <int N>
+bool to_window(const ClipVertex<N>& c, const Viewport& vp, WindowVertex<N>& out) {
+    if (!(c.position.w > 0.0f)) return false;
+    const float inv_w = 1.0f / c.position.w;
+    out.x = (c.position.x * inv_w + 1.0f) * 0.5f * float(vp.width);
+    out.y = (1.0f - c.position.y * inv_w) * 0.5f * float(vp.height);
+    out.z = (c.position.z * inv_w + 1.0f) * 0.5f;
+    out.inv_w = inv_w;
+    out.var = c.var;
+    return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z) && std::isfinite(inv_w);
+}
+
+}  // namespace softraster

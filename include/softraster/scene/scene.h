@@ -1,0 +1,82 @@
+// A scene as scene format version 1 describes it (see docs and shared spec), already
+// validated and with its meshes and textures loaded.
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "softraster/image.h"
+#include "softraster/render_state.h"
+#include "softraster/scene/mesh.h"
+#include "softraster/shading/texture.h"
+
+namespace softraster {
+
+enum class Shading { Unlit, Flat, Gouraud, Lambert, BlinnPhong, Normals, Depth };
+
+struct Material {
+    Shading shading = Shading::Lambert;
+    glm::vec4 color{1.0f};
+    std::shared_ptr<const Texture> texture;  // none: the texture term is 1
+    Filter filter = Filter::Bilinear;
+    Wrap wrap = Wrap::Repeat;
+    glm::vec3 specular{0.0f};
+    float shininess = 32.0f;
+    BlendMode blend = BlendMode::Opaque;
+};
+
+struct DirectionalLight {
+    glm::vec3 direction{0, -1, 0};  // the way the light travels
+    glm::vec3 color{1.0f};
+};
+
+struct Lights {
+    static constexpr size_t kMaxDirectional = 8;
+    glm::vec3 ambient{0.0f};
+    std::vector<DirectionalLight> directional;
+};
+
+struct Camera {
+    bool orthographic = false;
+    glm::vec3 eye{0, 0, 3}, target{0, 0, 0}, up{0, 1, 0};
+    float fov_y = 45.0f;   // degrees, perspective
+    float height = 2.0f;   // view volume height, orthographic
+    float near = 0.1f, far = 100.0f;
+};
+
+struct SceneObject {
+    std::shared_ptr<const Mesh> mesh;
+    glm::mat4 model{1.0f};  // T * Rz * Ry * Rx * S
+    Material material;
+    CullMode cull = CullMode::Back;
+    FrontFace front_face = FrontFace::CCW;
+};
+
+struct Scene {
+    int width = 640, height = 480;
+    glm::vec4 background{0, 0, 0, 1};
+    int samples = 1;
+    Camera camera;
+    Lights lights;
+    std::vector<SceneObject> objects;
+};
+
+// Model matrix M = T * Rz(rz) * Ry(ry) * Rx(rx) * S, angles in degrees.
+glm::mat4 model_matrix(const glm::vec3& translate, const glm::vec3& rotate_deg, const glm::vec3& scale);
+// gluLookAt and gluPerspective / glOrtho for the scene's camera and image aspect.
+glm::mat4 view_matrix(const Camera& c);
+glm::mat4 projection_matrix(const Camera& c, int width, int height);
+
+// Reads and validates a scene file; meshes and textures are resolved relative to it.
+// Throws InputError with one line naming the file and the JSON path or line.
+Scene load_scene(const std::filesystem::path& path);
+
+// The built-in showcase scene (needs no files).
+Scene showcase_scene();
+
+}  // namespace softraster

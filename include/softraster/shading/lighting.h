@@ -1,0 +1,41 @@
+// The spec's lighting terms (spec "Shading"), all in world space:
+//   diffuse intensity  I = A + sum_i c_i max(0, N . L_i),            L_i = -normalize(direction_i)
+//   specular           S = sum_{i: N.L_i > 0} c_i specular max(0, N . H_i)^shininess,
+//                      H_i = normalize(L_i + V), V = normalize(eye - P), pow(0, 0) = 1.
+#pragma once
+#include <array>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+namespace softraster {
+
+struct LightSet {
+    static constexpr int kMax = 8;
+    glm::vec3 ambient{0.0f};
+    int count = 0;
+    std::array<glm::vec3, kMax> to_light{};  // L_i, unit vectors toward each light
+    std::array<glm::vec3, kMax> color{};
+};
+
+inline glm::vec3 diffuse_intensity(const LightSet& lights, const glm::vec3& n) {
+    glm::vec3 intensity = lights.ambient;
+    for (int i = 0; i < lights.count; ++i)
+        intensity += lights.color[size_t(i)] * std::max(0.0f, glm::dot(n, lights.to_light[size_t(i)]));
+    return intensity;
+}
+
+inline glm::vec3 specular_term(const LightSet& lights, const glm::vec3& n, const glm::vec3& to_eye,
+                               const glm::vec3& specular, float shininess) {
+    glm::vec3 sum(0.0f);
+    for (int i = 0; i < lights.count; ++i) {
+        const glm::vec3 l = lights.to_light[size_t(i)];
+        if (!(glm::dot(n, l) > 0.0f)) continue;
+        const glm::vec3 h = glm::normalize(l + to_eye);
+        sum += lights.color[size_t(i)] * specular * std::pow(std::max(0.0f, glm::dot(n, h)), shininess);
+    }
+    return sum;
+}
+
+}  // namespace softraster

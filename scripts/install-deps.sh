@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs everything softraster needs on Debian 12 from Debian's own packages.
+# Usage: scripts/install-deps.sh [--tests]   (--tests adds what only the test suite needs)
+set -euo pipefail
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+pkgs=(cmake ninja-build g++ pkg-config python3
+      libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev)
+if [ "${1:-}" = "--tests" ]; then
+  # GoogleTest and Google Benchmark for the suite; OSMesa (Mesa llvmpipe) is the test-only reference.
+  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev)
+fi
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

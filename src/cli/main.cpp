@@ -1,0 +1,38 @@
+// softraster: render 3D scenes on the CPU.
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "cli/commands.h"
+#include "softraster/error.h"
+
+int main(int argc, char** argv) {
+    using namespace softraster;
+    CLI::App app{"softraster: a CPU rasterizer that renders scene files (format version 1) to PNG"};
+    app.require_subcommand(1);
+    app.footer("Run 'softraster COMMAND --help' for a command's options.\n"
+               "Exit codes: 0 success, 1 internal error, 2 bad input (scene, mesh, image or flag).");
+    const cli::Run render = cli::add_render_command(app);
+    const cli::Run showcase = cli::add_showcase_command(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "softraster: error: " << e.what() << " (see softraster --help)\n";
+        return cli::kExitBadInput;
+    }
+    try {
+        if (app.got_subcommand("render")) return render();
+        if (app.got_subcommand("showcase")) return showcase();
+    } catch (const InputError& e) {
+        std::cerr << "softraster: error: " << e.what() << "\n";
+        return cli::kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "softraster: internal error: " << e.what() << "\n";
+        return 1;
+    }
+    return 1;
+}

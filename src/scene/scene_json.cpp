@@ -1,0 +1,289 @@
+// Scene format version 1: JSON -> Scene, with every rule of the spec checked.
+// Errors name the file and the JSON path: "scene.json: objects[2].material.shininess: ...".
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "io/text_parse.h"
+#include "softraster/error.h"
+#include "softraster/io/image_io.h"
+#include "softraster/scene/builtin_meshes.h"
+#include "softraster/scene/scene.h"
+
+namespace softraster {
+namespace {
+
+using nlohmann::json;
+
+// A JSON value and where it is, for error messages.
+class Node {
+public:
+    Node(const json& j, std::string path, const std::string& file) : j_(j), path_(std::move(path)), file_(file) {}
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw InputError(file_ + ": " + (path_.empty() ? std::string("top level") : path_) + ": " + what);
+    }
+    const json& raw() const { return j_; }
+
+    // An object whose keys are all in `allowed`.
+    void expect_object(std::initializer_list<const char*> allowed) const {
+        if (!j_.is_object()) fail("expected an object, got " + type_name());
+        for (const auto& [key, value] : j_.items()) {
+            bool ok = false;
+            for (const char* a : allowed) ok = ok || key == a;
+            if (!ok) Node(value, child_path(key), file_).fail("unknown key");
+        }
+    }
+    bool has(const char* key) const { return j_.contains(key); }
+    Node operator[](const char* key) const {
+        if (!j_.contains(key)) Node(j_, child_path(key), file_).fail("required field is missing");
+        return Node(j_.at(key), child_path(key), file_);
+    }
+    Node at(size_t i) const { return Node(j_.at(i), path_ + "[" + std::to_string(i) + "]", file_); }
+    size_t array_size() const {
+        if (!j_.is_array()) fail("expected an array, got " + type_name());
+        return j_.size();
+    }
+
+    double number() const {
+        if (!j_.is_number()) fail("expected a number, got " + type_name());
+        const double d = j_.get<double>();
+        if (!std::isfinite(d)) fail("number is not finite");
+        return d;
+    }
+    double number_in(double lo, double hi, bool lo_open, bool hi_open, const char* range) const {
+        const double d = number();
+        if (d < lo || d > hi || (lo_open && d == lo) || (hi_open && d == hi))
+            fail("value " + j_.dump() + " out of range (" + range + ")");
+        return d;
+    }
+    int integer_in(int lo, int hi) const {
+        if (!j_.is_number()) fail("expected an integer, got " + type_name());
+        const double d = j_.get<double>();
+        if (!std::isfinite(d) || d != std::floor(d)) fail("expected an integer, got " + j_.dump());
+        if (d < lo || d > hi) fail("value " + j_.dump() + " out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+        return int(d);
+    }
+    std::string string() const {
+        if (!j_.is_string()) fail("expected a string, got " + type_name());
+        return j_.get<std::string>();
+    }
+    template <size_t N>
+    std::array<double, N> numbers() const {
+        if (!j_.is_array() || j_.size() != N) fail("expected an array of " + std::to_string(N) + " numbers");
+        std::array<double, N> out;
+        for (size_t i = 0; i < N; ++i) out[i] = at(i).number();
+        return out;
+    }
+    glm::vec3 vec3() const {
+        const auto a = numbers<3>();
+        return glm::vec3(float(a[0]), float(a[1]), float(a[2]));
+    }
+    glm::vec4 vec4() const {
+        const auto a = numbers<4>();
+        return glm::vec4(float(a[0]), float(a[1]), float(a[2]), float(a[3]));
+    }
+    template <class E>
+    E choice(std::initializer_list<std::pair<const char*, E>> options) const {
+        const std::string s = string();
+        std::string names;
+        for (const auto& [name, value] : options) {
+            if (s == name) return value;
+            names += names.empty() ? name : std::string(", ") + name;
+        }
+        fail("unknown value '" + s + "' (expected one of: " + names + ")");
+    }
+
+private:
+    std::string child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+    std::string type_name() const { return j_.type_name(); }
+
+    const json& j_;
+    std::string path_;
+    const std::string& file_;
+};
+
+glm::vec3 nonzero_vec3(const Node& n) {
+    const glm::vec3 v = n.vec3();
+    if (glm::length(v) == 0.0f) n.fail("must not be the zero vector");
+    return v;
+}
+
+struct Loader {
+    std::filesystem::path dir;
+    std::string file;
+    std::map<std::string, std::shared_ptr<const Mesh>> meshes;  // one load per distinct file
+    std::map<std::string, std::shared_ptr<const Texture>> textures;
+
+    void read_image(const Node& n, Scene& s) {
+        n.expect_object({"width", "height", "background", "samples"});
+        s.width = n["width"].integer_in(1, 16384);
+        s.height = n["height"].integer_in(1, 16384);
+        if (n.has("background")) s.background = n["background"].vec4();
+        if (n.has("samples")) {
+            s.samples = n["samples"].integer_in(1, 4);
+            if (s.samples != 1 && s.samples != 4) n["samples"].fail("must be 1 or 4");
+        }
+    }
+
+    void read_camera(const Node& n, Camera& c) {
+        n.expect_object({"projection", "eye", "target", "up", "fov_y", "height", "near", "far"});
+        if (n.has("projection"))
+            c.orthographic = n["projection"].choice<bool>({{"perspective", false}, {"orthographic", true}});
+        c.eye = n["eye"].vec3();
+        c.target = n["target"].vec3();
+        if (n.has("up")) c.up = nonzero_vec3(n["up"]);
+        if (n.has("fov_y")) c.fov_y = float(n["fov_y"].number_in(0, 180, true, true, "0 < fov_y < 180"));
+        if (n.has("height")) c.height = float(n["height"].number_in(0, HUGE_VAL, true, false, "> 0"));
+        if (n.has("near")) c.near = float(n["near"].number_in(0, HUGE_VAL, true, false, "> 0"));
+        if (n.has("far")) c.far = float(n["far"].number_in(0, HUGE_VAL, true, false, "> 0"));
+        if (!(c.near < c.far)) (n.has("far") ? n["far"] : n["near"]).fail("near must be less than far");
+        const glm::dvec3 view = glm::dvec3(c.target) - glm::dvec3(c.eye);
+        if (glm::length(view) == 0.0) n["target"].fail("eye and target are the same point");
+        if (glm::length(glm::cross(glm::normalize(view), glm::normalize(glm::dvec3(c.up)))) < 1e-9)
+            (n.has("up") ? n["up"] : n).fail("up is parallel to the view direction");
+    }
+
+    void read_lights(const Node& n, Lights& l) {
+        n.expect_object({"ambient", "directional"});
+        if (n.has("ambient")) l.ambient = n["ambient"].vec3();
+        if (!n.has("directional")) return;
+        const Node list = n["directional"];
+        const size_t count = list.array_size();
+        if (count > Lights::kMaxDirectional) list.fail("at most 8 directional lights, got " + std::to_string(count));
+        for (size_t i = 0; i < count; ++i) {
+            const Node d = list.at(i);
+            d.expect_object({"direction", "color"});
+            DirectionalLight light;
+            light.direction = nonzero_vec3(d["direction"]);
+            if (d.has("color")) light.color = d["color"].vec3();
+            l.directional.push_back(light);
+        }
+    }
+
+    std::shared_ptr<const Mesh> read_builtin(const Node& n) {
+        if (!n.raw().is_object()) n.fail("expected an object");
+        const std::string type = n["type"].string();
+        auto positive = [&](const char* key, double def) {
+            return n.has(key) ? n[key].number_in(0, HUGE_VAL, true, false, "> 0") : def;
+        };
+        auto count = [&](const char* key, int def, int min) {
+            return n.has(key) ? n[key].integer_in(min, 1 << 14) : def;
+        };
+        if (type == "plane") {
+            n.expect_object({"type", "size", "divisions"});
+            return std::make_shared<Mesh>(make_plane(positive("size", 2), count("divisions", 1, 1)));
+        }
+        if (type == "uv_sphere") {
+            n.expect_object({"type", "radius", "rings", "segments"});
+            return std::make_shared<Mesh>(make_uv_sphere(positive("radius", 1), count("rings", 32, 2), count("segments", 64, 3)));
+        }
+        if (type == "torus") {
+            n.expect_object({"type", "major", "minor", "rings", "segments"});
+            return std::make_shared<Mesh>(make_torus(positive("major", 1), positive("minor", 0.25), count("rings", 48, 3),
+                                                     count("segments", 24, 3)));
+        }
+        if (type == "cube") {
+            n.expect_object({"type", "size"});
+            return std::make_shared<Mesh>(make_cube(positive("size", 2)));
+        }
+        n["type"].fail("unknown builtin '" + type + "' (expected one of: plane, uv_sphere, torus, cube)");
+    }
+
+    std::shared_ptr<const Mesh> read_mesh_file(const Node& n) {
+        const std::string rel = n.string();
+        if (rel.empty()) n.fail("empty mesh path");
+        const std::string path = (dir / rel).lexically_normal().string();
+        auto& slot = meshes[path];
+        if (!slot) slot = std::make_shared<Mesh>(load_mesh(path));
+        return slot;
+    }
+
+    std::shared_ptr<const Texture> read_texture(const Node& n) {
+        const std::string rel = n.string();
+        if (rel.empty()) n.fail("empty texture path");
+        const std::string path = (dir / rel).lexically_normal().string();
+        auto& slot = textures[path];
+        if (!slot) slot = std::make_shared<Texture>(softraster::read_image(path));
+        return slot;
+    }
+
+    void read_material(const Node& n, Material& m) {
+        n.expect_object({"shading", "color", "texture", "filter", "wrap", "specular", "shininess", "blend"});
+        if (n.has("shading"))
+            m.shading = n["shading"].choice<Shading>({{"unlit", Shading::Unlit}, {"flat", Shading::Flat},
+                                                      {"gouraud", Shading::Gouraud}, {"lambert", Shading::Lambert},
+                                                      {"blinn_phong", Shading::BlinnPhong}, {"normals", Shading::Normals},
+                                                      {"depth", Shading::Depth}});
+        if (n.has("color")) m.color = n["color"].vec4();
+        if (n.has("filter")) m.filter = n["filter"].choice<Filter>({{"nearest", Filter::Nearest}, {"bilinear", Filter::Bilinear}});
+        if (n.has("wrap")) m.wrap = n["wrap"].choice<Wrap>({{"repeat", Wrap::Repeat}, {"clamp", Wrap::Clamp}});
+        if (n.has("specular")) m.specular = n["specular"].vec3();
+        if (n.has("shininess")) m.shininess = float(n["shininess"].number_in(0, HUGE_VAL, false, false, ">= 0"));
+        if (n.has("blend"))
+            m.blend = n["blend"].choice<BlendMode>({{"opaque", BlendMode::Opaque}, {"alpha", BlendMode::Alpha},
+                                                    {"additive", BlendMode::Additive}});
+        if (n.has("texture")) m.texture = read_texture(n["texture"]);
+    }
+
+    SceneObject read_object(const Node& n) {
+        n.expect_object({"mesh", "builtin", "transform", "material", "cull", "front_face"});
+        SceneObject o;
+        if (n.has("mesh") == n.has("builtin")) n.fail("exactly one of 'mesh' and 'builtin' is required");
+        glm::vec3 translate(0.0f), rotate(0.0f), scale(1.0f);
+        if (n.has("transform")) {
+            const Node t = n["transform"];
+            t.expect_object({"translate", "rotate", "scale"});
+            if (t.has("translate")) translate = t["translate"].vec3();
+            if (t.has("rotate")) rotate = t["rotate"].vec3();
+            if (t.has("scale")) {
+                const Node s = t["scale"];
+                scale = s.raw().is_array() ? s.vec3() : glm::vec3(float(s.number()));
+                if (scale.x == 0.0f || scale.y == 0.0f || scale.z == 0.0f) s.fail("scale must not be zero");
+            }
+        }
+        o.model = model_matrix(translate, rotate, scale);
+        if (n.has("cull"))
+            o.cull = n["cull"].choice<CullMode>({{"back", CullMode::Back}, {"front", CullMode::Front}, {"none", CullMode::None}});
+        if (n.has("front_face")) o.front_face = n["front_face"].choice<FrontFace>({{"ccw", FrontFace::CCW}, {"cw", FrontFace::CW}});
+        if (n.has("material")) read_material(n["material"], o.material);
+        if (n.has("builtin")) {
+            o.mesh = read_builtin(n["builtin"]);
+        } else {
+            o.mesh = read_mesh_file(n["mesh"]);
+        }
+        return o;
+    }
+};
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    const std::string text = read_text_file(path);
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& e) {
+        // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ..."
+        std::string what = e.what();
+        if (const size_t p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
+        throw InputError(file + ": malformed JSON: " + what);
+    }
+    Loader loader{path.parent_path(), file, {}, {}};
+    Scene scene;
+    const Node top(root, "", file);
+    top.expect_object({"version", "image", "camera", "lights", "objects"});
+    if (top["version"].integer_in(1, 1) != 1) top["version"].fail("must be 1");
+    loader.read_image(top["image"], scene);
+    loader.read_camera(top["camera"], scene.camera);
+    if (top.has("lights")) loader.read_lights(top["lights"], scene.lights);
+    const Node objects = top["objects"];
+    for (size_t i = 0; i < objects.array_size(); ++i) scene.objects.push_back(loader.read_object(objects.at(i)));
+    return scene;
+}
+
+}  // namespace softraster

@@ -1,0 +1,152 @@
+#include "softraster/scene/scene_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "softraster/context.h"
+
+namespace softraster {
+namespace {
+
+// Flat shading uses the world-space face normal of each triangle before clipping. Giving
+// every triangle its own corners that carry that normal (already in world space, so the
+// shader's normal matrix is the identity) makes it an ordinary interpolated attribute.
+std::shared_ptr<Mesh> world_face_normal_mesh(const Mesh& mesh, const glm::mat4& model) {
+    auto out = std::make_shared<Mesh>();
+    out->vertices.reserve(mesh.indices.size());
+    out->indices.reserve(mesh.indices.size());
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        MeshVertex v[3];
+        glm::vec3 p[3];
+        for (int k = 0; k < 3; ++k) {
+            v[k] = mesh.vertices[mesh.indices[i + size_t(k)]];
+            p[k] = glm::vec3(model * glm::vec4(v[k].position, 1.0f));
+        }
+        const glm::vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+        for (int k = 0; k < 3; ++k) {
+            v[k].normal = n;
+            out->indices.push_back(uint32_t(out->vertices.size()));
+            out->vertices.push_back(v[k]);
+        }
+    }
+    return out;
+}
+
+// View-space depth (negative z: larger is nearer) of the center of the object-space bounding
+// box of all triangle corners: the key blended objects are sorted by.
+float view_depth_of_bounds_center(const Mesh& mesh, const glm::mat4& model_view) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    bool any = false;
+    for (uint32_t i : mesh.indices) {
+        const glm::vec3 p = mesh.vertices[i].position;
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+        any = true;
+    }
+    if (!any) return 0.0f;
+    return (model_view * glm::vec4(0.5f * (lo + hi), 1.0f)).z;
+}
+
+LightSet light_set(const Lights& lights) {
+    LightSet set;
+    set.ambient = lights.ambient;
+    for (const DirectionalLight& l : lights.directional) {
+        if (set.count == LightSet::kMax) break;
+        set.to_light[size_t(set.count)] = -glm::normalize(l.direction);
+        set.color[size_t(set.count)] = l.color;
+        ++set.count;
+    }
+    return set;
+}
+
+template <Shading M>
+void draw_model(Context& ctx, const SceneRenderer::Draw& d) {
+    const std::span<const MeshVertex> vertices(d.mesh->vertices);
+    const std::span<const uint32_t> indices(d.mesh->indices);
+    if (d.uniforms.texture) ctx.draw(Topology::Triangles, SurfaceShader<M, true>{&d.uniforms}, vertices, indices);
+    else ctx.draw(Topology::Triangles, SurfaceShader<M, false>{&d.uniforms}, vertices, indices);
+}
+
+void draw_object(Context& ctx, const SceneRenderer::Draw& d) {
+    ctx.state = d.state;
+    switch (d.shading) {
+        case Shading::Unlit: draw_model<Shading::Unlit>(ctx, d); break;
+        case Shading::Flat: draw_model<Shading::Flat>(ctx, d); break;
+        case Shading::Gouraud: draw_model<Shading::Gouraud>(ctx, d); break;
+        case Shading::Lambert: draw_model<Shading::Lambert>(ctx, d); break;
+        case Shading::BlinnPhong: draw_model<Shading::BlinnPhong>(ctx, d); break;
+        case Shading::Normals: draw_model<Shading::Normals>(ctx, d); break;
+        case Shading::Depth: draw_model<Shading::Depth>(ctx, d); break;
+    }
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(const Scene& scene) : scene_(scene) {
+    const glm::mat4 view = view_matrix(scene.camera);
+    const glm::mat4 proj = projection_matrix(scene.camera, scene.width, scene.height);
+    const LightSet lights = light_set(scene.lights);
+
+    struct Keyed {
+        Draw draw;
+        float depth;
+    };
+    std::vector<Keyed> opaque, blended;
+    for (const SceneObject& o : scene.objects) {
+        Draw d{o.mesh.get(), nullptr, {}, {}, o.material.shading};
+        SurfaceUniforms& u = d.uniforms;
+        u.mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
+        u.model = o.model;
+        u.normal_matrix = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(o.model)))));
+        u.eye = scene.camera.eye;
+        u.lights = lights;
+        u.color = o.material.color;
+        u.specular = o.material.specular;
+        u.shininess = o.material.shininess;
+        u.texture = o.material.texture.get();
+        u.filter = o.material.filter;
+        u.wrap = o.material.wrap;
+        if (o.material.shading == Shading::Flat) {
+            d.flat_mesh = world_face_normal_mesh(*o.mesh, o.model);
+            d.mesh = d.flat_mesh.get();
+            u.normal_matrix = glm::mat3(1.0f);
+        }
+        d.state.cull = o.cull;
+        d.state.front_face = o.front_face;
+        d.state.blend = o.material.blend;
+        d.state.depth_write = o.material.blend == BlendMode::Opaque;  // blended objects test but do not write
+        const bool is_blended = o.material.blend != BlendMode::Opaque;
+        const float depth = is_blended ? view_depth_of_bounds_center(*o.mesh, view * o.model) : 0.0f;
+        (is_blended ? blended : opaque).push_back({std::move(d), depth});
+    }
+    // Opaque first in file order; then blended, farthest (most negative view z) first,
+    // ties in file order.
+    std::stable_sort(blended.begin(), blended.end(), [](const Keyed& a, const Keyed& b) { return a.depth < b.depth; });
+    for (auto* list : {&opaque, &blended})
+        for (Keyed& k : *list) draws_.push_back(std::move(k.draw));
+}
+
+size_t SceneRenderer::triangle_count() const {
+    size_t n = 0;
+    for (const Draw& d : draws_) n += d.mesh->triangle_count();
+    return n;
+}
+
+void SceneRenderer::render(Framebuffer& fb) const {
+    Context ctx(fb);
+    ctx.clear(scene_.background, 1.0f);
+    for (const Draw& d : draws_) draw_object(ctx, d);
+}
+
+Image SceneRenderer::render() const {
+    Framebuffer fb(scene_.width, scene_.height, scene_.samples);
+    render(fb);
+    return fb.read_pixels();
+}
+
+}  // namespace softraster
