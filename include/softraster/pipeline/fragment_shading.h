@@ -35,9 +35,9 @@ void draw_triangle(const S& shader, const RenderState& st, Framebuffer& fb,
                    const TriangleSetup<kVaryingCount<typename S::Varyings>>& t, const Rect& rect) {
     using V = typename S::Varyings;
     rasterize_triangle<Samples>(t, rect, [&](const CoveredPixel<Samples>& px) {
-        shade_fragment<Samples, B>(shader, st, fb, px.x, px.y, px.mask, px.z.data(),
-                                   interpolate_depth(t, px.center), t.front_facing,
-                                   [&] { return from_array<V>(interpolate_perspective(t, px.center)); });
+        const float cx = float(px.x) + 0.5f, cy = float(px.y) + 0.5f;  // shaded at the pixel center
+        shade_fragment<Samples, B>(shader, st, fb, px.x, px.y, px.mask, px.z.data(), interpolate_depth(t, cx, cy),
+                                   t.front_facing, [&] { return from_array<V>(interpolate_perspective(t, cx, cy)); });
     });
 }
 

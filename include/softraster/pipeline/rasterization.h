@@ -25,14 +25,12 @@ struct SamplePattern<4> {  // (0.375, 0.125), (0.875, 0.375), (0.125, 0.625), (0
     static constexpr std::array<int, 4> x = {96, 224, 32, 160}, y = {32, 96, 160, 224};
 };
 
-// One pixel the triangle touches: its covered samples, their depths, and the barycentrics
-// at the pixel center, where the fragment is shaded (even if the center itself is outside).
+// One pixel the triangle touches: its covered samples and their depths.
 template <int Samples>
 struct CoveredPixel {
     int x = 0, y = 0;
     unsigned mask = 0;  // bit s set: sample s is covered
     std::array<float, Samples> z{};
-    Barycentrics center{};
 };
 
 // Calls on_pixel(const CoveredPixel<Samples>&) for every pixel of `rect` with coverage.
@@ -66,14 +64,10 @@ void rasterize_triangle(const TriangleSetup<N>& t, const Rect& rect, OnPixel&& o
                 px.x = x;
                 px.y = y;
                 px.mask = mask;
-                px.center = screen_barycentrics(t, e[0], e[1], e[2]);
-                for (size_t s = 0; s < size_t(Samples); ++s) {
-                    if (!(mask & (1u << s))) continue;
-                    px.z[s] = Samples == 1 ? interpolate_depth(t, px.center)
-                                           : interpolate_depth(t, screen_barycentrics(t, e[0] + sample_offset[0][s],
-                                                                                      e[1] + sample_offset[1][s],
-                                                                                      e[2] + sample_offset[2][s]));
-                }
+                for (size_t s = 0; s < size_t(Samples); ++s)
+                    if (mask & (1u << s))
+                        px.z[s] = interpolate_depth(t, float(x) + float(P::x[s]) * (1.0f / 256.0f),
+                                                    float(y) + float(P::y[s]) * (1.0f / 256.0f));
                 on_pixel(px);
             }
             for (size_t i = 0; i < 3; ++i) e[i] += t.A[i] * kSubpixelOne;

@@ -11,7 +11,12 @@
 //   With y down, a top edge is horizontal with the interior below it (dy == 0, dx > 0) and
 //   a left edge goes up the screen (dy < 0). Two triangles sharing an edge see it with
 //   opposite directions, so exactly one of them owns the samples on it.
-// Edge i is the edge opposite vertex i, so E_i / 2A is the screen-space barycentric l_i.
+// Edge i is the edge opposite vertex i.
+//
+// Attributes are interpolated with plane equations a(x, y) = a0 + da/dx (x - x0) + da/dy (y - y0)
+// built from the unsnapped window positions, as a GPU's setup does: snapping decides
+// coverage only, so attributes do not shift by the snapping error, which matters where
+// they change fast (a texture far away).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -36,16 +41,24 @@ struct Rect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
+// An attribute's plane over window space, relative to the triangle's reference point.
+// Double precision: where 1/w spans orders of magnitude across a triangle (a ground plane
+// clipped at the near plane and reaching the horizon), float planes lose the low bits of
+// 1/w near the horizon and a minified texture aliases differently (conformance near_clip).
+struct Plane {
+    double a0 = 0, dadx = 0, dady = 0;
+    double at(double dx, double dy) const { return a0 + dadx * dx + dady * dy; }
+};
+
 template <int N>
 struct TriangleSetup {
     std::array<int64_t, 3> A, B, C;  // E_i(p) = A_i p.x + B_i p.y + C_i, p in 24.8 fixed point
     std::array<int64_t, 3> bias;     // 0 on top-left edges, -1 elsewhere: inside iff E_i + bias_i >= 0
-    int64_t area2 = 0;               // 2A > 0 in fixed point squared
-    float inv_area2 = 0;
     Rect bounds;                     // pixels the triangle may touch, inclusive-exclusive
-    std::array<float, 3> z;          // window depth of each vertex
-    std::array<float, 3> inv_w;      // 1/w of each vertex
-    std::array<std::array<float, N>, 3> var;
+    double ref_x = 0, ref_y = 0;     // window position of vertex 0: the planes' origin
+    Plane z;                         // window depth
+    Plane inv_w;                     // 1/w
+    std::array<Plane, N> var_w;      // varying / w
     bool front_facing = true;
 
     int64_t edge(int i, int64_t px, int64_t py) const {
@@ -92,12 +105,24 @@ bool setup_triangle(const WindowVertex<N>& v0, const WindowVertex<N>& v1, const 
         t.C[size_t(i)] = dy * X[a] - dx * Y[a];
         const bool top_left = dy < 0 || (dy == 0 && dx > 0);
         t.bias[size_t(i)] = top_left ? 0 : -1;
-        t.z[size_t(i)] = v[i]->z;
-        t.inv_w[size_t(i)] = v[i]->inv_w;
-        t.var[size_t(i)] = v[i]->var;
     }
-    t.area2 = area2;
-    t.inv_area2 = float(1.0 / double(area2));
+
+    // Plane gradients by Cramer's rule on the two edge vectors from vertex 0.
+    t.ref_x = v[0]->x;
+    t.ref_y = v[0]->y;
+    const double x1 = double(v[1]->x) - v[0]->x, y1 = double(v[1]->y) - v[0]->y;
+    const double x2 = double(v[2]->x) - v[0]->x, y2 = double(v[2]->y) - v[0]->y;
+    const double det = x1 * y2 - x2 * y1;
+    const double inv_det = det != 0.0 ? 1.0 / det : 0.0;  // unsnapped sliver: flat planes
+    auto plane = [&](double a0, double a1, double a2) {
+        const double d1 = a1 - a0, d2 = a2 - a0;
+        return Plane{a0, (d1 * y2 - d2 * y1) * inv_det, (d2 * x1 - d1 * x2) * inv_det};
+    };
+    t.z = plane(v[0]->z, v[1]->z, v[2]->z);
+    t.inv_w = plane(v[0]->inv_w, v[1]->inv_w, v[2]->inv_w);
+    for (size_t k = 0; k < size_t(N); ++k)
+        t.var_w[k] = plane(double(v[0]->var[k]) * v[0]->inv_w, double(v[1]->var[k]) * v[1]->inv_w,
+                           double(v[2]->var[k]) * v[2]->inv_w);
     return true;
 }
 
