@@ -16,7 +16,8 @@ Run add_showcase_command(CLI::App& app) {
         check_output_path(*out);
         const auto start = std::chrono::steady_clock::now();
         const Scene scene = showcase_scene();
-        write_output(SceneRenderer(scene).render(), *out, std::chrono::steady_clock::now() - start);
+        const Image image = SceneRenderer(scene).render();
+        write_output(image, *out, std::chrono::steady_clock::now() - start);
         return 0;
     };
 }

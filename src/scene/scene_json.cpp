@@ -267,8 +267,9 @@ Scene load_scene(const std::filesystem::path& path) {
     json root;
     try {
         root = json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {
         // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ..."
+        // (or out_of_range.406 for a number too large for a double)
         std::string what = e.what();
         if (const size_t p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
         throw InputError(file + ": malformed JSON: " + what);

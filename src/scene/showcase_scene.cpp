@@ -45,8 +45,8 @@ Scene showcase_scene() {
     s.height = 540;
     s.samples = 4;
     s.background = {0.55f, 0.68f, 0.85f, 1.0f};
-    s.camera.eye = {0.0f, 1.4f, 5.2f};
-    s.camera.target = {0.0f, 0.45f, 0.0f};
+    s.camera.eye = {0.0f, 2.3f, 5.4f};
+    s.camera.target = {0.0f, 0.3f, 0.0f};
     s.camera.fov_y = 50.0f;
     s.camera.near = 0.1f;
     s.camera.far = 100.0f;
@@ -72,7 +72,7 @@ Scene showcase_scene() {
     Material crate = material(Shading::Lambert, glm::vec4(1.0f));
     crate.texture = ground.texture;
     crate.filter = Filter::Nearest;
-    s.objects.push_back(object(cube, {2.0f, 0.45f, -0.7f}, {0, 35, 0}, crate));
+    s.objects.push_back(object(cube, {2.2f, 0.45f, -0.9f}, {0, 35, 0}, crate));
     s.objects.push_back(object(sphere, {-1.3f, 0.6f, 0.9f}, {0, 0, 0}, material(Shading::Normals, glm::vec4(1.0f))));
 
     // Transparent objects, drawn last, farthest first.
@@ -82,7 +82,7 @@ Scene showcase_scene() {
     s.objects.push_back(object(sphere, {0.25f, 0.65f, 0.6f}, {0, 0, 0}, glass));
     Material glow = material(Shading::Unlit, {1.0f, 0.55f, 0.15f, 0.6f});
     glow.blend = BlendMode::Additive;
-    s.objects.push_back(object(torus, {1.45f, 0.7f, 0.9f}, {90, 0, 0}, glow));
+    s.objects.push_back(object(torus, {1.5f, 0.35f, 1.3f}, {50, 0, 25}, glow));
     return s;
 }
 

@@ -1,0 +1,129 @@
+// Scene format version 1: defaults, validation errors with their JSON paths, transforms and
+// the draw order of opaque and blended objects.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "softraster/error.h"
+#include "softraster/scene/scene.h"
+#include "softraster/scene/scene_renderer.h"
+
+using namespace softraster;
+
+namespace {
+
+std::filesystem::path write_scene(const std::string& name, const std::string& json) {
+    const auto dir = std::filesystem::temp_directory_path() / "softraster_scene_tests";
+    std::filesystem::create_directories(dir);
+    const auto p = dir / name;
+    std::ofstream(p) << json;
+    return p;
+}
+
+const char* kMinimal = R"({"version": 1, "image": {"width": 32, "height": 16},
+  "camera": {"eye": [0, 0, 3], "target": [0, 0, 0]}, "objects": [{"builtin": {"type": "cube"}}]})";
+
+std::string error_of(const std::string& json) {
+    try {
+        load_scene(write_scene("bad.json", json));
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string with(const std::string& from, const std::string& to) {
+    std::string s = kMinimal;
+    const size_t at = s.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return s.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST(SceneJson, Defaults) {
+    const Scene s = load_scene(write_scene("min.json", kMinimal));
+    EXPECT_EQ(s.samples, 1);
+    EXPECT_EQ(s.background, glm::vec4(0, 0, 0, 1));
+    EXPECT_FALSE(s.camera.orthographic);
+    EXPECT_EQ(s.camera.up, glm::vec3(0, 1, 0));
+    EXPECT_FLOAT_EQ(s.camera.fov_y, 45);
+    EXPECT_FLOAT_EQ(s.camera.near, 0.1f);
+    EXPECT_FLOAT_EQ(s.camera.far, 100);
+    EXPECT_EQ(s.lights.ambient, glm::vec3(0));
+    ASSERT_EQ(s.objects.size(), 1u);
+    const SceneObject& o = s.objects[0];
+    EXPECT_EQ(o.cull, CullMode::Back);
+    EXPECT_EQ(o.front_face, FrontFace::CCW);
+    EXPECT_EQ(o.material.shading, Shading::Lambert);
+    EXPECT_EQ(o.material.filter, Filter::Bilinear);
+    EXPECT_EQ(o.material.wrap, Wrap::Repeat);
+    EXPECT_FLOAT_EQ(o.material.shininess, 32);
+    EXPECT_EQ(o.material.blend, BlendMode::Opaque);
+    EXPECT_EQ(o.mesh->triangle_count(), 12u);
+}
+
+TEST(SceneJson, ErrorsNameThePathAndTheProblem) {
+    const std::pair<std::string, const char*> cases[] = {
+        {with("\"width\": 32", "\"width\": 0"), "image.width: value 0 out of range"},
+        {with("\"width\": 32", "\"width\": 20000"), "image.width: value 20000 out of range"},
+        {with("\"width\": 32", "\"width\": \"32\""), "image.width: expected an integer, got string"},
+        {with("\"height\": 16}", "\"height\": 16, \"samples\": 3}"), "image.samples: must be 1 or 4"},
+        {with("\"target\": [0, 0, 0]", "\"target\": [0, 0, 0], \"near\": 5, \"far\": 2"), "camera.far: near must be less than far"},
+        {with("\"target\": [0, 0, 0]", "\"target\": [0, 0, 0], \"fov_y\": 180"), "camera.fov_y: value 180 out of range"},
+        {with("\"target\": [0, 0, 0]", "\"target\": [0, 0, 3]"), "eye and target are the same point"},
+        {with("\"target\": [0, 0, 0]", "\"target\": [0, 0, 0], \"up\": [0, 0, 2]"), "camera.up: up is parallel"},
+        {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"builtin\": {\"type\": \"cube\"}, \"materal\": {}}"), "objects[0].materal: unknown key"},
+        {with("{\"type\": \"cube\"}", "{\"type\": \"cube\", \"size\": -1}"), "objects[0].builtin.size: value -1 out of range"},
+        {with("{\"type\": \"cube\"}", "{\"type\": \"cone\"}"), "objects[0].builtin.type: unknown builtin"},
+        {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"builtin\": {\"type\": \"cube\"}, \"material\": {\"shading\": \"phong\"}}"), "objects[0].material.shading: unknown value 'phong'"},
+        {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"builtin\": {\"type\": \"cube\"}, \"transform\": {\"scale\": [1, 0, 1]}}"), "objects[0].transform.scale: scale must not be zero"},
+        {with("{\"builtin\": {\"type\": \"cube\"}}", "{}"), "objects[0]: exactly one of 'mesh' and 'builtin'"},
+        {with("\"version\": 1", "\"version\": 2"), "version: value 2 out of range"},
+        {with("\"version\": 1,", ""), "version: required field is missing"},
+        {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"mesh\": \"missing.obj\"}"), "missing.obj: file not found"},
+        {"{\"version\": 1, \"image\": {", "malformed JSON"},
+        {with("\"target\": [0, 0, 0]", "\"target\": [0, 0, 1e999]"), "malformed JSON"},
+    };
+    for (const auto& [json, expected] : cases) {
+        const std::string err = error_of(json);
+        EXPECT_NE(err.find(expected), std::string::npos) << "got: " << err << "\nwanted: " << expected;
+        EXPECT_EQ(err.find('\n'), std::string::npos) << "one line: " << err;
+    }
+}
+
+TEST(SceneJson, ModelMatrixScalesThenRotatesXYZThenTranslates) {
+    const glm::mat4 m = model_matrix(glm::vec3(1, 2, 3), glm::vec3(90, 90, 0), glm::vec3(2));
+    // (1, 0, 0) -> scale (2, 0, 0) -> Rx(90): (2, 0, 0) -> Ry(90): (0, 0, -2) -> translate.
+    const glm::vec4 p = m * glm::vec4(1, 0, 0, 1);
+    EXPECT_NEAR(p.x, 1, 1e-5f);
+    EXPECT_NEAR(p.y, 2, 1e-5f);
+    EXPECT_NEAR(p.z, 1, 1e-5f);
+    // (0, 1, 0) -> Rx(90): (0, 0, 1) -> Ry(90): (1, 0, 0).
+    const glm::vec4 q = m * glm::vec4(0, 1, 0, 0);
+    EXPECT_NEAR(q.x, 2, 1e-5f);
+    EXPECT_NEAR(q.z, 0, 1e-5f);
+}
+
+TEST(SceneJson, BlendedObjectsAreDrawnLastFarthestFirst) {
+    const std::string json = R"({"version": 1, "image": {"width": 8, "height": 8},
+      "camera": {"eye": [0, 0, 10], "target": [0, 0, 0]},
+      "objects": [
+        {"builtin": {"type": "cube"}, "transform": {"translate": [0, 0, 2]}, "material": {"blend": "alpha"}},
+        {"builtin": {"type": "cube"}, "transform": {"translate": [0, 0, -3]}, "material": {"blend": "additive"}},
+        {"builtin": {"type": "plane"}, "transform": {"translate": [0, 0, 5]}},
+        {"builtin": {"type": "cube"}, "transform": {"translate": [0, 0, 2]}, "material": {"blend": "alpha", "color": [1, 0, 0, 0.5]}}
+      ]})";
+    const Scene s = load_scene(write_scene("order.json", json));
+    const SceneRenderer r(s);
+    ASSERT_EQ(r.draws().size(), 4u);
+    EXPECT_EQ(r.draws()[0].state.blend, BlendMode::Opaque);     // the plane
+    EXPECT_EQ(r.draws()[1].state.blend, BlendMode::Additive);   // z = -3: farthest
+    EXPECT_EQ(r.draws()[2].uniforms.color, glm::vec4(1));       // z = 2, file order kept on ties
+    EXPECT_EQ(r.draws()[3].uniforms.color, glm::vec4(1, 0, 0, 0.5f));
+    EXPECT_FALSE(r.draws()[1].state.depth_write);               // blended: test, no write
+    EXPECT_TRUE(r.draws()[0].state.depth_write);
+}

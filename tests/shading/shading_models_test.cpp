@@ -1,0 +1,115 @@
+// Each shading model on a known input, against the spec's formulas computed by hand.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "softraster/shading/surface_shader.h"
+
+using namespace softraster;
+
+namespace {
+
+SurfaceUniforms uniforms() {
+    SurfaceUniforms u;
+    u.eye = glm::vec3(0, 0, 5);
+    u.lights.ambient = glm::vec3(0.1f, 0.2f, 0.3f);
+    u.lights.count = 2;
+    u.lights.to_light[0] = glm::vec3(0, 0, 1);                       // straight on
+    u.lights.color[0] = glm::vec3(0.5f);
+    u.lights.to_light[1] = glm::normalize(glm::vec3(0, 1, -1));      // behind the surface: no light
+    u.lights.color[1] = glm::vec3(1.0f);
+    u.color = glm::vec4(0.8f, 0.6f, 0.4f, 0.5f);
+    u.specular = glm::vec3(0.3f);
+    u.shininess = 10.0f;
+    return u;
+}
+
+SurfaceVaryings surface(glm::vec3 normal) {
+    return {glm::vec3(0, 0, 0), normal, glm::vec2(0), glm::vec4(1, 1, 1, 1), glm::vec3(0)};
+}
+
+template <Shading M>
+glm::vec4 shade(const SurfaceUniforms& u, const SurfaceVaryings& v, float z = 0.25f) {
+    glm::vec4 c;
+    EXPECT_TRUE((SurfaceShader<M, false>{&u}.fragment(v, FragCoord{0, 0, z, true}, c)));
+    return c;
+}
+
+void expect_vec4(glm::vec4 a, glm::vec4 b) {
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(a[i], b[i], 1e-5f) << "channel " << i;
+}
+
+}  // namespace
+
+TEST(ShadingModels, Unlit) {
+    const SurfaceUniforms u = uniforms();
+    SurfaceVaryings v = surface({0, 0, 1});
+    v.color = glm::vec4(0.5f, 1, 1, 1);
+    expect_vec4(shade<Shading::Unlit>(u, v), glm::vec4(0.4f, 0.6f, 0.4f, 0.5f));
+}
+
+TEST(ShadingModels, LambertAndFlat) {
+    const SurfaceUniforms u = uniforms();
+    // N.L0 = 1 -> I = ambient + 0.5; light 1 is behind (N.L1 < 0).
+    const glm::vec3 I = glm::vec3(0.6f, 0.7f, 0.8f);
+    const glm::vec4 expected(glm::vec3(0.8f, 0.6f, 0.4f) * I, 0.5f);
+    expect_vec4(shade<Shading::Lambert>(u, surface({0, 0, 2})), expected);  // normalized after interpolation
+    expect_vec4(shade<Shading::Flat>(u, surface({0, 0, 1})), expected);
+}
+
+TEST(ShadingModels, GrazingLightGivesAmbientOnly) {
+    SurfaceUniforms u = uniforms();
+    u.lights.to_light[0] = glm::vec3(1, 0, 0);  // N.L = 0
+    expect_vec4(shade<Shading::Lambert>(u, surface({0, 0, 1})), glm::vec4(glm::vec3(0.8f, 0.6f, 0.4f) * u.lights.ambient, 0.5f));
+}
+
+TEST(ShadingModels, GouraudUsesTheInterpolatedIntensity) {
+    const SurfaceUniforms u = uniforms();
+    SurfaceVaryings v = surface({0, 1, 0});
+    v.intensity = glm::vec3(0.5f, 1.0f, 2.0f);
+    expect_vec4(shade<Shading::Gouraud>(u, v), glm::vec4(0.4f, 0.6f, 0.8f, 0.5f));
+    // The vertex stage computes the intensity from the transformed normal.
+    MeshVertex in;
+    in.normal = glm::vec3(0, 0, 1);
+    SurfaceVaryings out;
+    SurfaceShader<Shading::Gouraud, false>{&u}.vertex(in, out);
+    EXPECT_NEAR(out.intensity.r, 0.6f, 1e-6f);
+    EXPECT_NEAR(out.intensity.b, 0.8f, 1e-6f);
+}
+
+TEST(ShadingModels, BlinnPhong) {
+    const SurfaceUniforms u = uniforms();
+    SurfaceVaryings v = surface({0, 0, 1});
+    v.world = glm::vec3(3, 0, 1);  // V = normalize(eye - P) = normalize(-3, 0, 4)
+    const glm::vec3 V = glm::normalize(glm::vec3(-3, 0, 4));
+    const glm::vec3 H = glm::normalize(glm::vec3(0, 0, 1) + V);
+    const float spec = std::pow(H.z, 10.0f);
+    const glm::vec3 rgb = glm::vec3(0.8f, 0.6f, 0.4f) * glm::vec3(0.6f, 0.7f, 0.8f) + glm::vec3(0.5f * 0.3f * spec);
+    expect_vec4(shade<Shading::BlinnPhong>(u, v), glm::vec4(rgb, 0.5f));
+}
+
+TEST(ShadingModels, BlinnPhongShininessZeroIsPowZeroZeroIsOne) {
+    SurfaceUniforms u = uniforms();
+    u.shininess = 0.0f;
+    u.lights.count = 1;
+    u.lights.to_light[0] = glm::normalize(glm::vec3(0, 1, 0.001f));  // N.L > 0 barely
+    SurfaceVaryings v = surface({0, 0, 1});
+    v.world = glm::vec3(0, -5, 0);  // V points up-ish so that N.H can be ~0
+    const glm::vec4 c = shade<Shading::BlinnPhong>(u, v);
+    const float diffuse = 0.5f * u.lights.to_light[0].z;
+    EXPECT_NEAR(c.r, 0.8f * (0.1f + diffuse) + 0.5f * 0.3f, 1e-5f);  // pow(x, 0) = 1
+}
+
+TEST(ShadingModels, NormalsAndDepth) {
+    const SurfaceUniforms u = uniforms();
+    expect_vec4(shade<Shading::Normals>(u, surface({0, 0, -3})), glm::vec4(0.5f, 0.5f, 0.0f, 1.0f));
+    expect_vec4(shade<Shading::Depth>(u, surface({0, 0, 1}), 0.625f), glm::vec4(0.625f, 0.625f, 0.625f, 1.0f));
+}
+
+TEST(ShadingModels, BackFacesAreLitWithTheNormalAsItIs) {
+    SurfaceUniforms u = uniforms();
+    u.lights.count = 1;  // the light in front
+    glm::vec4 c;
+    SurfaceShader<Shading::Lambert, false>{&u}.fragment(surface({0, 0, -1}), FragCoord{0, 0, 0.5f, false}, c);
+    EXPECT_NEAR(c.r, 0.8f * 0.1f, 1e-6f);  // not flipped: only ambient
+}

@@ -1,0 +1,67 @@
+// Shared helpers for the unit tests: tiny shaders that take clip-space positions directly.
+#pragma once
+#include <random>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "softraster/context.h"
+
+namespace softraster::test {
+
+// Vertex = clip-space position + one scalar attribute; the fragment color is a constant.
+struct ClipVertexIn {
+    glm::vec4 clip;
+    float value = 0;
+};
+
+struct ValueVaryings {
+    float value;
+};
+
+struct ConstantColorShader {
+    using Vertex = ClipVertexIn;
+    using Varyings = ValueVaryings;
+    glm::vec4 color{1.0f};
+    glm::vec4 vertex(const Vertex& in, Varyings& out) const {
+        out.value = in.value;
+        return in.clip;
+    }
+    bool fragment(const Varyings&, const FragCoord&, glm::vec4& c) const {
+        c = color;
+        return true;
+    }
+};
+
+// Writes the interpolated value to red (as value / 255 would be lossy, tests read it back
+// through a capture instead: see CaptureShader).
+struct CaptureShader {
+    using Vertex = ClipVertexIn;
+    using Varyings = ValueVaryings;
+    std::vector<float>* values;  // width * height, written per shaded pixel
+    int width;
+    glm::vec4 vertex(const Vertex& in, Varyings& out) const {
+        out.value = in.value;
+        return in.clip;
+    }
+    bool fragment(const Varyings& v, const FragCoord& f, glm::vec4& c) const {
+        (*values)[size_t(int(f.y) * width + int(f.x))] = v.value;
+        c = glm::vec4(1.0f);
+        return true;
+    }
+};
+
+// Window position (pixels, y down) and depth -> clip coordinates with w = 1.
+inline glm::vec4 window_to_clip(float x, float y, int width, int height, float z = 0.5f, float w = 1.0f) {
+    return glm::vec4((2.0f * x / float(width) - 1.0f) * w, (1.0f - 2.0f * y / float(height)) * w, (2.0f * z - 1.0f) * w, w);
+}
+
+template <class S>
+void draw(Context& ctx, const S& shader, const std::vector<typename S::Vertex>& v, const std::vector<uint32_t>& idx,
+          Topology t = Topology::Triangles) {
+    ctx.draw(t, shader, std::span<const typename S::Vertex>(v), std::span<const uint32_t>(idx));
+}
+
+}  // namespace softraster::test
