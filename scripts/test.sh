@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs what the tests need, then builds and runs the whole suite twice: a Release build,
+# and a build under AddressSanitizer + UndefinedBehaviorSanitizer.
+#   scripts/test.sh            (both)
+#   scripts/test.sh release    (Release only, faster while working)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh --tests
+jobs=$(nproc)
+run_suite() {  # name, cmake args...
+  local dir="build-$1"; shift
+  echo "=== $dir"
+  cmake -S . -B "$dir" -G Ninja "$@" >/dev/null
+  cmake --build "$dir" -j "$jobs"
+  ctest --test-dir "$dir" -j "$jobs" --output-on-failure
+}
+run_suite release -DCMAKE_BUILD_TYPE=Release
+if [ "${1:-}" != "release" ]; then
+  # detect_leaks: LeakSanitizer is part of ASan; halt on the first UB report.
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  run_suite asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTRASTER_SANITIZE=ON
+fi
