@@ -159,7 +159,7 @@ struct Loader {
             d.expect_object({"direction", "color"});
             DirectionalLight light;
             light.direction = nonzero_vec3(d["direction"]);
-            if (d.has("color")) light.color = d["color"].vec3();
+            light.color = d["color"].vec3();  // no default in the spec: required
             l.directional.push_back(light);
         }
     }
