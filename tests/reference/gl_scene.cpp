@@ -1,0 +1,309 @@
+#include "gl_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+namespace glref {
+namespace {
+
+using softraster::Shading;
+
+const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec4 a_color;
+uniform mat4 u_mvp;
+uniform mat4 u_model;
+uniform mat3 u_normal_matrix;
+uniform vec3 u_ambient;
+uniform int u_light_count;
+uniform vec3 u_to_light[8];
+uniform vec3 u_light_color[8];
+out vec3 v_world;
+out vec3 v_normal;
+out vec2 v_uv;
+out vec4 v_color;
+out vec3 v_intensity;
+void main() {
+    v_world = (u_model * vec4(a_pos, 1.0)).xyz;
+    v_normal = u_normal_matrix * a_normal;
+    v_uv = a_uv;
+    v_color = a_color;
+    vec3 n = normalize(v_normal);
+    v_intensity = u_ambient;
+    for (int i = 0; i < u_light_count; ++i) v_intensity += u_light_color[i] * max(0.0, dot(n, u_to_light[i]));
+    vec4 clip = u_mvp * vec4(a_pos, 1.0);
+    // Flip y: GL window row 0 (the first row in memory) becomes the top row of the picture,
+    // so llvmpipe's fill rule and sample pattern apply in the picture as stored.
+    gl_Position = vec4(clip.x, -clip.y, clip.z, clip.w);
+}
+)";
+
+const char* kFragmentShader = R"(#version 330 core
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+in vec4 v_color;
+in vec3 v_intensity;
+uniform int u_shading;  // 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth
+uniform bool u_textured;
+uniform sampler2D u_texture;
+uniform vec4 u_color;
+uniform vec3 u_specular;
+uniform float u_shininess;
+uniform vec3 u_eye;
+uniform vec3 u_ambient;
+uniform int u_light_count;
+uniform vec3 u_to_light[8];
+uniform vec3 u_light_color[8];
+out vec4 frag;
+void main() {
+    if (u_shading == 6) { frag = vec4(vec3(gl_FragCoord.z), 1.0); return; }
+    vec3 n = normalize(v_normal);
+    if (u_shading == 5) { frag = vec4(0.5 * n + 0.5, 1.0); return; }
+    vec4 base = u_color * v_color;
+    if (u_textured) base *= texture(u_texture, v_uv);
+    if (u_shading == 0) { frag = base; return; }
+    if (u_shading == 2) { frag = vec4(base.rgb * v_intensity, base.a); return; }
+    vec3 intensity = u_ambient;
+    vec3 spec = vec3(0.0);
+    vec3 v = normalize(u_eye - v_world);
+    for (int i = 0; i < u_light_count; ++i) {
+        float nl = dot(n, u_to_light[i]);
+        intensity += u_light_color[i] * max(0.0, nl);
+        if (u_shading == 4 && nl > 0.0) {
+            vec3 h = normalize(u_to_light[i] + v);
+            float nh = max(0.0, dot(n, h));
+            spec += u_light_color[i] * u_specular * (u_shininess == 0.0 ? 1.0 : pow(nh, u_shininess));
+        }
+    }
+    frag = vec4(base.rgb * intensity + spec, base.a);
+}
+)";
+
+GLuint compile(GLenum type, const char* src) {
+    const GLuint s = glCreateShader(type);
+    glShaderSource(s, 1, &src, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[2048];
+        glGetShaderInfoLog(s, sizeof log, nullptr, log);
+        throw std::runtime_error(std::string("GLSL compile error: ") + log);
+    }
+    return s;
+}
+
+// World-space face normal per triangle, on fresh corners (the spec's flat shading).
+softraster::Mesh flat_mesh(const softraster::Mesh& m, const glm::mat4& model) {
+    softraster::Mesh out;
+    for (size_t i = 0; i + 2 < m.indices.size(); i += 3) {
+        softraster::MeshVertex v[3];
+        glm::vec3 p[3];
+        for (int k = 0; k < 3; ++k) {
+            v[k] = m.vertices[m.indices[i + size_t(k)]];
+            p[k] = glm::vec3(model * glm::vec4(v[k].position, 1.0f));
+        }
+        const glm::vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+        for (auto& x : v) {
+            x.normal = n;
+            out.indices.push_back(uint32_t(out.vertices.size()));
+            out.vertices.push_back(x);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+struct GlScene::Draw {
+    GLuint vao = 0, vbo = 0, ibo = 0, texture = 0;
+    GLsizei index_count = 0;
+    const softraster::SceneObject* object = nullptr;
+    glm::mat4 mvp{1.0f}, model{1.0f};
+    glm::mat3 normal_matrix{1.0f};
+    float view_depth = 0;
+    bool blended = false;
+
+    ~Draw() {
+        glDeleteVertexArrays(1, &vao);
+        glDeleteBuffers(1, &vbo);
+        glDeleteBuffers(1, &ibo);
+    }
+};
+
+GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
+    program_ = glCreateProgram();
+    glAttachShader(program_, compile(GL_VERTEX_SHADER, kVertexShader));
+    glAttachShader(program_, compile(GL_FRAGMENT_SHADER, kFragmentShader));
+    glLinkProgram(program_);
+    GLint ok = 0;
+    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+    if (!ok) throw std::runtime_error("GLSL link error");
+
+    const glm::mat4 view = softraster::view_matrix(scene.camera);
+    const glm::mat4 proj = softraster::projection_matrix(scene.camera, scene.width, scene.height);
+    std::map<const softraster::Texture*, GLuint> textures;
+    for (const softraster::SceneObject& o : scene.objects) {
+        auto d = std::make_unique<Draw>();
+        d->object = &o;
+        d->model = o.model;
+        d->mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
+        d->normal_matrix = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(o.model)))));
+        softraster::Mesh flat;
+        const softraster::Mesh* mesh = o.mesh.get();
+        if (o.material.shading == Shading::Flat) {
+            flat = flat_mesh(*mesh, o.model);
+            mesh = &flat;
+            d->normal_matrix = glm::mat3(1.0f);
+        }
+        // Blended objects: sort key is the view depth of the object-space bounding box center.
+        d->blended = o.material.blend != softraster::BlendMode::Opaque;
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (uint32_t i : o.mesh->indices) {
+            const glm::vec3 p = o.mesh->vertices[i].position;
+            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        }
+        d->view_depth = lo.x <= hi.x ? (view * o.model * glm::vec4(0.5f * (lo + hi), 1.0f)).z : 0.0f;
+
+        glGenVertexArrays(1, &d->vao);
+        glBindVertexArray(d->vao);
+        glGenBuffers(1, &d->vbo);
+        glBindBuffer(GL_ARRAY_BUFFER, d->vbo);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh->vertices.size() * sizeof(softraster::MeshVertex)), mesh->vertices.data(), GL_STATIC_DRAW);
+        const GLsizei stride = sizeof(softraster::MeshVertex);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, position)));
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, normal)));
+        glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, uv)));
+        glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, color)));
+        for (GLuint a = 0; a < 4; ++a) glEnableVertexAttribArray(a);
+        // Triangles with a non-finite corner are not drawn (GL leaves them undefined).
+        std::vector<uint32_t> idx;
+        for (size_t i = 0; i + 2 < mesh->indices.size(); i += 3) {
+            bool finite = true;
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3 p = mesh->vertices[mesh->indices[i + size_t(k)]].position;
+                finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+            }
+            if (finite) idx.insert(idx.end(), mesh->indices.begin() + long(i), mesh->indices.begin() + long(i) + 3);
+        }
+        glGenBuffers(1, &d->ibo);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d->ibo);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * 4), idx.data(), GL_STATIC_DRAW);
+        d->index_count = GLsizei(idx.size());
+
+        if (const softraster::Texture* t = o.material.texture.get()) {
+            GLuint& tex = textures[t];
+            if (!tex) {
+                // Texel row 0 is the bottom of the picture: what GL calls t = 0.
+                std::vector<uint8_t> bytes(size_t(t->width()) * size_t(t->height()) * 4);
+                for (int j = 0; j < t->height(); ++j)
+                    for (int i = 0; i < t->width(); ++i) {
+                        const glm::vec4 c = t->texel(i, j);
+                        for (int k = 0; k < 4; ++k)
+                            bytes[(size_t(j) * size_t(t->width()) + size_t(i)) * 4 + size_t(k)] = uint8_t(std::lround(c[k] * 255.0f));
+                    }
+                glGenTextures(1, &tex);
+                glBindTexture(GL_TEXTURE_2D, tex);
+                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+                glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t->width(), t->height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+            }
+            d->texture = tex;
+        }
+        draws_.push_back(std::move(d));
+    }
+    // Opaque first in file order, then blended farthest first (stable: ties keep file order).
+    std::stable_sort(draws_.begin(), draws_.end(), [](const auto& a, const auto& b) {
+        if (a->blended != b->blended) return !a->blended;
+        return a->blended && a->view_depth < b->view_depth;
+    });
+    if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL error while uploading the scene");
+}
+
+GlScene::~GlScene() {
+    draws_.clear();
+    glDeleteProgram(program_);
+}
+
+void GlScene::draw_frame() const {
+    const glm::vec4 bg = scene_.background;
+    glClearColor(bg.r, bg.g, bg.b, bg.a);
+    glClearDepth(1.0);
+    glDepthMask(GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_MULTISAMPLE);
+    glUseProgram(program_);
+    auto loc = [&](const char* n) { return glGetUniformLocation(program_, n); };
+    const softraster::Lights& lights = scene_.lights;
+    glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(lights.ambient));
+    glUniform1i(loc("u_light_count"), GLint(lights.directional.size()));
+    for (size_t i = 0; i < lights.directional.size(); ++i) {
+        const glm::vec3 l = -glm::normalize(lights.directional[i].direction);
+        glUniform3fv(loc(("u_to_light[" + std::to_string(i) + "]").c_str()), 1, glm::value_ptr(l));
+        glUniform3fv(loc(("u_light_color[" + std::to_string(i) + "]").c_str()), 1, glm::value_ptr(lights.directional[i].color));
+    }
+    glUniform3fv(loc("u_eye"), 1, glm::value_ptr(scene_.camera.eye));
+    glUniform1i(loc("u_texture"), 0);
+    for (const auto& d : draws_) {
+        const softraster::SceneObject& o = *d->object;
+        const softraster::Material& m = o.material;
+        glUniformMatrix4fv(loc("u_mvp"), 1, GL_FALSE, glm::value_ptr(d->mvp));
+        glUniformMatrix4fv(loc("u_model"), 1, GL_FALSE, glm::value_ptr(d->model));
+        glUniformMatrix3fv(loc("u_normal_matrix"), 1, GL_FALSE, glm::value_ptr(d->normal_matrix));
+        glUniform1i(loc("u_shading"), int(m.shading));
+        glUniform4fv(loc("u_color"), 1, glm::value_ptr(m.color));
+        glUniform3fv(loc("u_specular"), 1, glm::value_ptr(m.specular));
+        glUniform1f(loc("u_shininess"), m.shininess);
+        glUniform1i(loc("u_textured"), d->texture != 0);
+        if (d->texture) {
+            glBindTexture(GL_TEXTURE_2D, d->texture);
+            const GLint filter = m.filter == softraster::Filter::Nearest ? GL_NEAREST : GL_LINEAR;
+            const GLint wrap = m.wrap == softraster::Wrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+        }
+        // The y flip in the vertex shader mirrors windings: front faces flip too.
+        if (o.cull == softraster::CullMode::None) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(o.cull == softraster::CullMode::Back ? GL_BACK : GL_FRONT);
+        }
+        glFrontFace(o.front_face == softraster::FrontFace::CCW ? GL_CW : GL_CCW);
+        switch (m.blend) {
+            case softraster::BlendMode::Opaque:
+                glDisable(GL_BLEND);
+                glDepthMask(GL_TRUE);
+                break;
+            case softraster::BlendMode::Alpha:
+                glEnable(GL_BLEND);
+                glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+                glDepthMask(GL_FALSE);
+                break;
+            case softraster::BlendMode::Additive:
+                glEnable(GL_BLEND);
+                glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE, GL_ZERO, GL_ONE);
+                glDepthMask(GL_FALSE);
+                break;
+        }
+        glBindVertexArray(d->vao);
+        glDrawElements(GL_TRIANGLES, d->index_count, GL_UNSIGNED_INT, nullptr);
+    }
+    glDepthMask(GL_TRUE);
+}
+
+}  // namespace glref

@@ -1,0 +1,30 @@
+// A scene (format version 1) uploaded to OpenGL and drawn with GLSL shaders that follow the
+// spec's formulas. Independent of softraster's pipeline: it shares only the scene loader
+// (meshes, textures, the spec's matrices), which has its own unit tests.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "osmesa_target.h"
+#include "softraster/scene/scene.h"
+
+namespace glref {
+
+class GlScene {
+public:
+    explicit GlScene(const softraster::Scene& scene);
+    ~GlScene();
+    GlScene(const GlScene&) = delete;
+    GlScene& operator=(const GlScene&) = delete;
+
+    // Clear and every draw, in the spec's order; the caller resolves and reads back.
+    void draw_frame() const;
+
+private:
+    struct Draw;
+    const softraster::Scene& scene_;
+    GLuint program_ = 0;
+    std::vector<std::unique_ptr<Draw>> draws_;
+};
+
+}  // namespace glref

@@ -1,0 +1,87 @@
+#include "osmesa_target.h"
+
+#include <stdexcept>
+
+namespace glref {
+namespace {
+
+GLuint make_renderbuffer(GLenum format, int samples, int w, int h) {
+    GLuint rb = 0;
+    glGenRenderbuffers(1, &rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    if (samples > 1) glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, w, h);
+    else glRenderbufferStorage(GL_RENDERBUFFER, format, w, h);
+    return rb;
+}
+
+void check_complete(const char* what) {
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error(std::string("incomplete framebuffer: ") + what);
+}
+
+}  // namespace
+
+OsmesaTarget::OsmesaTarget(int width, int height, int samples) : width_(width), height_(height), samples_(samples) {
+    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
+    if (!ctx_) throw std::runtime_error("OSMesaCreateContextAttribs failed (no OpenGL 3.3 core context)");
+    dummy_.resize(4 * 4 * 4);
+    if (!OSMesaMakeCurrent(ctx_, dummy_.data(), GL_UNSIGNED_BYTE, 4, 4))
+        throw std::runtime_error("OSMesaMakeCurrent failed");
+    if (renderer().find("llvmpipe") == std::string::npos)
+        throw std::runtime_error("GL_RENDERER is '" + renderer() + "', not llvmpipe: refusing to use it as the reference");
+
+    glGenFramebuffers(1, &fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    color_ = make_renderbuffer(GL_RGBA8, samples, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+    depth_ = make_renderbuffer(GL_DEPTH_COMPONENT32F, samples, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    check_complete("drawing target");
+    if (samples > 1) {
+        glGenFramebuffers(1, &resolve_fbo_);
+        glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+        resolve_color_ = make_renderbuffer(GL_RGBA8, 1, width, height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color_);
+        check_complete("resolve target");
+    }
+    bind_for_drawing();
+}
+
+OsmesaTarget::~OsmesaTarget() {
+    if (!ctx_) return;
+    glDeleteFramebuffers(1, &fbo_);
+    glDeleteFramebuffers(1, &resolve_fbo_);
+    const GLuint rbs[] = {color_, depth_, resolve_color_};
+    glDeleteRenderbuffers(3, rbs);
+    OSMesaDestroyContext(ctx_);
+}
+
+std::string OsmesaTarget::renderer() const {
+    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return r ? r : "";
+}
+
+void OsmesaTarget::bind_for_drawing() {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glViewport(0, 0, width_, height_);
+}
+
+void OsmesaTarget::resolve() {
+    if (samples_ <= 1) return;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+softraster::Image OsmesaTarget::read_pixels() {
+    softraster::Image img(width_, height_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, samples_ > 1 ? resolve_fbo_ : fbo_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+    if (glGetError() != GL_NO_ERROR) throw std::runtime_error("glReadPixels failed");
+    return img;
+}
+
+}  // namespace glref
