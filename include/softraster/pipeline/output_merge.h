@@ -1,10 +1,12 @@
 // Stage 9, output merge: the per-sample depth test, blending and the color write.
 //
 // Color is stored as 8-bit RGBA. Blending follows the spec's formulas on the stored 8-bit
-// destination, computed in float and quantized once (exact to rounding):
+// destination, in 8-bit fixed point as llvmpipe and GPUs do it for RGBA8 targets: the source
+// is clamped and quantized to 8 bits, each product rounded to nearest, sums saturated:
 //   alpha:    rgb = s.rgb s.a + d.rgb (1 - s.a),  a = s.a + d.a (1 - s.a)
 //   additive: rgb = s.rgb s.a + d.rgb,            a = d.a
-// The source is clamped to [0, 1] first, as for any fixed-point color attachment.
+// (Float arithmetic quantized once differs by one level here and there; over many layers
+// those differences add up against the reference.)
 #pragma once
 #include <glm/common.hpp>
 #include <glm/vec4.hpp>
@@ -28,20 +30,26 @@ inline bool depth_passes(DepthFunc f, float z, float stored) {
     return false;
 }
 
+// x * y / 255 for 8-bit x, y, rounded to nearest: the exact unorm8 product that GPUs and
+// llvmpipe use ((t + 128 + ((t + 128) >> 8)) >> 8 with t = x * y, Blinn 1995).
+inline unsigned mul_unorm8(unsigned x, unsigned y) {
+    const unsigned t = x * y + 128;
+    return (t + (t >> 8)) >> 8;
+}
+
 template <BlendMode B>
-inline Rgba8 blend(const glm::vec4& src_unclamped, Rgba8 dst) {
-    const glm::vec4 src = glm::clamp(src_unclamped, 0.0f, 1.0f);
+inline Rgba8 blend(const glm::vec4& src, Rgba8 dst) {
+    const Rgba8 s = quantize_rgba8(src);  // clamps to [0, 1]
     if constexpr (B == BlendMode::Opaque) {
-        return quantize_rgba8(src);
+        return s;
     } else {
-        const glm::vec4 d = glm::vec4(dst.r, dst.g, dst.b, dst.a) * (1.0f / 255.0f);
-        const float a = src.a;
+        auto sat = [](unsigned v) { return uint8_t(v > 255 ? 255 : v); };
+        const unsigned a = s.a, inv_a = 255u - s.a;
         if constexpr (B == BlendMode::Alpha) {
-            return quantize_rgba8(glm::vec4(glm::vec3(src) * a + glm::vec3(d) * (1.0f - a), a + d.a * (1.0f - a)));
+            return {sat(mul_unorm8(s.r, a) + mul_unorm8(dst.r, inv_a)), sat(mul_unorm8(s.g, a) + mul_unorm8(dst.g, inv_a)),
+                    sat(mul_unorm8(s.b, a) + mul_unorm8(dst.b, inv_a)), sat(a + mul_unorm8(dst.a, inv_a))};
         } else {
-            Rgba8 out = quantize_rgba8(glm::vec4(glm::vec3(src) * a + glm::vec3(d), 0.0f));
-            out.a = dst.a;
-            return out;
+            return {sat(mul_unorm8(s.r, a) + dst.r), sat(mul_unorm8(s.g, a) + dst.g), sat(mul_unorm8(s.b, a) + dst.b), dst.a};
         }
     }
 }
