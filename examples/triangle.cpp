@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     ctx.draw(softraster::Topology::Triangles, GradientShader{proj * view}, std::span<const Vertex>(vertices),
              std::span<const uint32_t>(indices));
 
-    softraster::write_png(fb.read_pixels(), out);
+    softraster::write_png(ctx.read_pixels(), out);  // runs the recorded draws, then resolves
     std::printf("wrote %s\n", out);
     return 0;
 }

@@ -62,6 +62,7 @@ template <class S>
 void draw(Context& ctx, const S& shader, const std::vector<typename S::Vertex>& v, const std::vector<uint32_t>& idx,
           Topology t = Topology::Triangles) {
     ctx.draw(t, shader, std::span<const typename S::Vertex>(v), std::span<const uint32_t>(idx));
+    ctx.finish();
 }
 
 }  // namespace softraster::test

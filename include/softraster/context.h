@@ -1,25 +1,27 @@
-// The library's front door: a Context draws primitives into a Framebuffer, stage by stage.
+// The library's front door: a Context records draws into a Framebuffer and runs them.
 //
 //   Framebuffer fb(640, 480);
-//   Context ctx(fb);
+//   Context ctx(fb);                       // or Context ctx(fb, &pool) to use worker threads
 //   ctx.clear(glm::vec4(0, 0, 0, 1));
 //   ctx.state.cull = CullMode::None;
 //   ctx.draw(Topology::Triangles, my_shader, vertices, indices);
-//   Image picture = fb.read_pixels();
+//   Image picture = ctx.read_pixels();      // runs what was recorded, then resolves
 //
-// vertex processing -> primitive assembly -> clipping -> perspective divide & viewport ->
-// culling & triangle setup -> rasterization -> fragment shading -> output merge -> resolve.
+// Draws are recorded, not run at once: the vertex and index data and whatever the shader
+// points to must stay alive until finish() (or read_pixels()). Running a whole frame at once
+// is what lets it be split over threads: vertex processing -> primitive assembly ->
+// clipping -> perspective divide & viewport -> culling -> binning into tiles, then per tile,
+// in draw order: triangle setup -> rasterization -> fragment shading -> output merge.
+// The picture does not depend on the number of threads.
 #pragma once
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "softraster/framebuffer.h"
-#include "softraster/pipeline/clipping.h"
-#include "softraster/pipeline/fragment_shading.h"
-#include "softraster/pipeline/line_rasterization.h"
-#include "softraster/pipeline/primitive_assembly.h"
-#include "softraster/pipeline/vertex_processing.h"
+#include "softraster/pipeline/draw_commands.h"
 #include "softraster/render_state.h"
+#include "softraster/worker_pool.h"
 
 namespace softraster {
 
@@ -40,114 +42,50 @@ void dispatch_samples_blend(int samples, BlendMode blend, F&& f) {
 
 class Context {
 public:
-    explicit Context(Framebuffer& fb) : fb_(fb) {}
+    // pool: worker threads to use (nullptr: everything on the calling thread).
+    explicit Context(Framebuffer& fb, WorkerPool* pool = nullptr) : fb_(&fb), pool_(pool) {}
 
-    RenderState state;
+    RenderState state;  // applies to the draws recorded after it is set
 
-    void clear(const glm::vec4& color, float depth = 1.0f) {
-        fb_.clear_color(color);
-        fb_.clear_depth(depth);
-    }
-    Framebuffer& framebuffer() { return fb_; }
+    void clear(const glm::vec4& color, float depth = 1.0f) { commands_.push_back(std::make_unique<ClearCommand>(color, depth)); }
 
-    // Draws `indices` (three per triangle, two per line, one per point) into the framebuffer.
+    // Records a draw of `indices` (three per triangle, two per line, one per point).
     // Throws std::out_of_range for an index past the end of `vertices`.
     template <Shader S>
     void draw(Topology topology, const S& shader, std::span<const typename S::Vertex> vertices,
               std::span<const uint32_t> indices) {
         validate_indices(indices, vertices.size(), topology);
-        constexpr int N = kVaryingCount<typename S::Varyings>;
-        std::vector<ClipVertex<N>> post;
-        process_vertices(shader, vertices, post);
-        dispatch_samples_blend(fb_.samples(), state.blend, [&]<int Samples, BlendMode B>() {
-            switch (topology) {
-                case Topology::Triangles: draw_triangles<Samples, B>(shader, post, indices); break;
-                case Topology::Lines: draw_lines<Samples, B>(shader, post, indices); break;
-                case Topology::Points: draw_points<Samples, B>(shader, post, indices); break;
-            }
+        dispatch_samples_blend(fb_->samples(), state.blend, [&]<int Samples, BlendMode B>() {
+            if (topology == Topology::Triangles)
+                commands_.push_back(std::make_unique<TriangleCommand<S, Samples, B>>(shader, state, vertices, indices));
+            else
+                commands_.push_back(std::make_unique<LinePointCommand<S, Samples, B>>(topology, shader, state, vertices, indices));
         });
     }
 
+    // Runs the recorded commands; they stay recorded, so execute() again draws the same
+    // frame again (reusing every buffer). finish() runs them and forgets them.
+    void execute();
+    void finish() {
+        execute();
+        commands_.clear();
+    }
+    // finish(), then the resolved picture.
+    Image read_pixels() {
+        finish();
+        return fb_->read_pixels();
+    }
+
+    // Draws into another framebuffer of the same sample count from now on.
+    void set_framebuffer(Framebuffer& fb) { fb_ = &fb; }
+    Framebuffer& framebuffer() { return *fb_; }
+    uint64_t fragments_shaded() const { return fragments_shaded_; }  // by the last execute()
+
 private:
-    Rect full_rect() const { return {0, 0, fb_.width(), fb_.height()}; }
-    Viewport viewport() const { return {fb_.width(), fb_.height()}; }
-
-    template <int Samples, BlendMode B, Shader S, int N>
-    void draw_triangles(const S& shader, const std::vector<ClipVertex<N>>& post, std::span<const uint32_t> indices) {
-        const ClipPlanes planes = ClipPlanes::for_viewport(fb_.width(), fb_.height());
-        const Rect rect = full_rect();
-        TriangleSetup<N> setup;
-        auto emit = [&](const ClipVertex<N>& a, const ClipVertex<N>& b, const ClipVertex<N>& c) {
-            WindowVertex<N> wa, wb, wc;
-            if (!to_window(a, viewport(), wa) || !to_window(b, viewport(), wb) || !to_window(c, viewport(), wc)) return;
-            if (!setup_triangle(wa, wb, wc, state.cull, state.front_face, rect, setup)) return;
-            draw_triangle<Samples, B>(shader, state, fb_, setup, rect);
-        };
-        ClipPolygon<N> poly;
-        for (size_t i = 0; i + 2 < indices.size(); i += 3) {
-            const ClipVertex<N>& a = post[indices[i]];
-            const ClipVertex<N>& b = post[indices[i + 1]];
-            const ClipVertex<N>& c = post[indices[i + 2]];
-            if (!is_finite(a.position) || !is_finite(b.position) || !is_finite(c.position)) continue;
-            const unsigned ca = planes.outcode(a.position), cb = planes.outcode(b.position),
-                           cc = planes.outcode(c.position);
-            if (ca & cb & cc) continue;  // all outside one plane
-            if ((ca | cb | cc) == 0) {
-                emit(a, b, c);
-                continue;
-            }
-            const int n = clip_triangle(a, b, c, planes, ca | cb | cc, poly);
-            for (int k = 1; k + 1 < n; ++k) emit(poly.v[0], poly.v[size_t(k)], poly.v[size_t(k + 1)]);
-        }
-    }
-
-    template <int Samples, BlendMode B, Shader S, int N>
-    void draw_lines(const S& shader, const std::vector<ClipVertex<N>>& post, std::span<const uint32_t> indices) {
-        using V = typename S::Varyings;
-        const ClipPlanes planes = ClipPlanes::frustum();
-        for (size_t i = 0; i + 1 < indices.size(); i += 2) {
-            ClipVertex<N> a = post[indices[i]], b = post[indices[i + 1]];
-            if (!is_finite(a.position) || !is_finite(b.position) || !clip_line(a, b, planes)) continue;
-            WindowVertex<N> wa, wb;
-            if (!to_window(a, viewport(), wa) || !to_window(b, viewport(), wb)) continue;
-            rasterize_line(wa, wb, full_rect(), [&](int x, int y, float z, float t) {
-                const std::array<float, Samples> zs = filled<Samples>(z);
-                shade_fragment<Samples, B>(shader, state, fb_, x, y, all_samples<Samples>(), zs.data(), z, true, [&] {
-                    std::array<float, N> v;
-                    for (size_t k = 0; k < size_t(N); ++k) v[k] = wa.var[k] + t * (wb.var[k] - wa.var[k]);
-                    return from_array<V>(v);
-                });
-            });
-        }
-    }
-
-    template <int Samples, BlendMode B, Shader S, int N>
-    void draw_points(const S& shader, const std::vector<ClipVertex<N>>& post, std::span<const uint32_t> indices) {
-        using V = typename S::Varyings;
-        const ClipPlanes planes = ClipPlanes::frustum();
-        for (uint32_t index : indices) {
-            const ClipVertex<N>& p = post[index];
-            if (!is_finite(p.position) || planes.outcode(p.position) != 0) continue;
-            WindowVertex<N> wp;
-            if (!to_window(p, viewport(), wp)) continue;
-            rasterize_point(wp, full_rect(), [&](int x, int y, float z) {
-                const std::array<float, Samples> zs = filled<Samples>(z);
-                shade_fragment<Samples, B>(shader, state, fb_, x, y, all_samples<Samples>(), zs.data(), z, true,
-                                           [&] { return from_array<V>(wp.var); });
-            });
-        }
-    }
-
-    template <int Samples>
-    static constexpr unsigned all_samples() { return (1u << Samples) - 1; }
-    template <int Samples>
-    static std::array<float, Samples> filled(float z) {
-        std::array<float, Samples> a;
-        a.fill(z);
-        return a;
-    }
-
-    Framebuffer& fb_;
+    Framebuffer* fb_;
+    WorkerPool* pool_;
+    std::vector<std::unique_ptr<Command>> commands_;
+    uint64_t fragments_shaded_ = 0;
 };
 
 }  // namespace softraster

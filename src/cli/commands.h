@@ -11,6 +11,7 @@ using Run = std::function<int()>;
 
 Run add_render_command(CLI::App& app);
 Run add_showcase_command(CLI::App& app);
+Run add_bench_command(CLI::App& app);
 
 // Exit codes: 0 success, 1 internal failure, 2 bad input (scene, mesh, image or flag).
 inline constexpr int kExitBadInput = 2;

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
                "Exit codes: 0 success, 1 internal error, 2 bad input (scene, mesh, image or flag).");
     const cli::Run render = cli::add_render_command(app);
     const cli::Run showcase = cli::add_showcase_command(app);
+    const cli::Run bench = cli::add_bench_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("showcase")) return showcase();
+        if (app.got_subcommand("bench")) return bench();
     } catch (const InputError& e) {
         std::cerr << "softraster: error: " << e.what() << "\n";
         return cli::kExitBadInput;

@@ -87,7 +87,8 @@ void draw_object(Context& ctx, const SceneRenderer::Draw& d) {
 
 }  // namespace
 
-SceneRenderer::SceneRenderer(const Scene& scene) : scene_(scene) {
+SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
+    : scene_(scene), pool_(threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr) {
     const glm::mat4 view = view_matrix(scene.camera);
     const glm::mat4 proj = projection_matrix(scene.camera, scene.width, scene.height);
     const LightSet lights = light_set(scene.lights);
@@ -137,10 +138,15 @@ size_t SceneRenderer::triangle_count() const {
     return n;
 }
 
-void SceneRenderer::render(Framebuffer& fb) const {
-    Context ctx(fb);
-    ctx.clear(scene_.background, 1.0f);
-    for (const Draw& d : draws_) draw_object(ctx, d);
+RenderStats SceneRenderer::render(Framebuffer& fb) const {
+    if (!ctx_) {
+        ctx_ = std::make_unique<Context>(fb, pool_.get());
+        ctx_->clear(scene_.background, 1.0f);
+        for (const Draw& d : draws_) draw_object(*ctx_, d);
+    }
+    ctx_->set_framebuffer(fb);
+    ctx_->execute();
+    return {ctx_->fragments_shaded()};
 }
 
 Image SceneRenderer::render() const {

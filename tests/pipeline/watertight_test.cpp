@@ -60,6 +60,7 @@ void expect_no_holes(const Mesh& mesh, const glm::mat4& model, int samples) {
     ctx.clear(glm::vec4(0, 0, 0, 1));
     ctx.draw(Topology::Triangles, SurfaceShader<Shading::Unlit, false>{&u}, std::span<const MeshVertex>(mesh.vertices),
              std::span<const uint32_t>(mesh.indices));
+    ctx.finish();
     std::vector<glm::dvec2> projected;
     for (const MeshVertex& v : mesh.vertices) {
         const glm::dvec4 c = glm::dmat4(u.mvp) * glm::dvec4(glm::dvec3(v.position), 1.0);

@@ -19,9 +19,14 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
-#include "softraster/pipeline/vertex_processing.h"
 
 namespace softraster {
+
+template <int N>
+struct ClipVertex {
+    glm::vec4 position;        // homogeneous clip coordinates
+    std::array<float, N> var;  // varyings
+};
 
 // How far the guard band reaches beyond each side of the viewport, in pixels. It bounds
 // window coordinates, which keeps 24.8 fixed-point edge functions exact in 64-bit integers.

@@ -18,10 +18,11 @@ namespace softraster {
 template <int Samples, BlendMode B, Shader S, class MakeVaryings>
 inline void shade_fragment(const S& shader, const RenderState& st, Framebuffer& fb, int x, int y,
                            unsigned covered, const float* z, float center_z, bool front_facing,
-                           MakeVaryings&& make_varyings) {
+                           MakeVaryings&& make_varyings, uint64_t& shaded) {
     const size_t base = fb.sample_index(x, y);
     const unsigned pass = depth_test<Samples>(st, fb.depth_data() + base, covered, z);
     if (!pass) return;
+    ++shaded;
     const typename S::Varyings v = make_varyings();
     const FragCoord frag{float(x) + 0.5f, float(y) + 0.5f, center_z, front_facing};
     glm::vec4 color;
@@ -29,16 +30,19 @@ inline void shade_fragment(const S& shader, const RenderState& st, Framebuffer& 
     merge_fragment<Samples, B>(st, fb.color_data() + base, fb.depth_data() + base, pass, z, color);
 }
 
-// Rasterizes one set-up triangle inside `rect` and shades what it covers.
+// Rasterizes one set-up triangle (within its bounds) and shades what it covers; returns the
+// number of fragments shaded.
 template <int Samples, BlendMode B, Shader S>
-void draw_triangle(const S& shader, const RenderState& st, Framebuffer& fb,
-                   const TriangleSetup<kVaryingCount<typename S::Varyings>>& t, const Rect& rect) {
+uint64_t draw_triangle(const S& shader, const RenderState& st, Framebuffer& fb,
+                       const TriangleSetup<kVaryingCount<typename S::Varyings>>& t) {
     using V = typename S::Varyings;
-    rasterize_triangle<Samples>(t, rect, [&](const CoveredPixel<Samples>& px) {
-        const float cx = float(px.x) + 0.5f, cy = float(px.y) + 0.5f;  // shaded at the pixel center
-        shade_fragment<Samples, B>(shader, st, fb, px.x, px.y, px.mask, px.z.data(), interpolate_depth(t, cx, cy),
-                                   t.front_facing, [&] { return from_array<V>(interpolate_perspective(t, cx, cy)); });
+    uint64_t shaded = 0;
+    rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
+        const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // shaded at the pixel center
+        shade_fragment<Samples, B>(shader, st, fb, px.x, px.y, px.mask, px.z.data(), interpolate_depth(t, i, j),
+                                   t.front_facing, [&] { return from_array<V>(interpolate_perspective(t, i, j)); }, shaded);
     });
+    return shaded;
 }
 
 }  // namespace softraster

@@ -64,10 +64,11 @@ void rasterize_triangle(const TriangleSetup<N>& t, const Rect& rect, OnPixel&& o
                 px.x = x;
                 px.y = y;
                 px.mask = mask;
+                const float i = float(x - t.origin_x), j = float(y - t.origin_y);
                 for (size_t s = 0; s < size_t(Samples); ++s)
                     if (mask & (1u << s))
-                        px.z[s] = interpolate_depth(t, float(x) + float(P::x[s]) * (1.0f / 256.0f),
-                                                    float(y) + float(P::y[s]) * (1.0f / 256.0f));
+                        px.z[s] = interpolate_depth(t, i + float(P::x[s] - 128) * (1.0f / 256.0f),
+                                                    j + float(P::y[s] - 128) * (1.0f / 256.0f));
                 on_pixel(px);
             }
             for (size_t i = 0; i < 3; ++i) e[i] += t.A[i] * kSubpixelOne;

@@ -1,31 +1,61 @@
 // Stage 1, vertex processing: run the vertex shader once per vertex of the buffer.
 //
-// The results (clip-space position + varyings) form the post-transform vertex buffer that
-// primitive assembly indexes into, so a vertex shared by many triangles is shaded once.
+// The results form the post-transform vertex buffer that primitive assembly indexes into,
+// so a vertex shared by many triangles is shaded once. Everything else that depends on one
+// vertex only is done here too, once: its clip outcode, the perspective divide and viewport
+// mapping, and the snapping of its window position to 24.8 fixed point.
 #pragma once
+#include <array>
+#include <cstdint>
 #include <span>
-#include <vector>
 
 #include <glm/vec4.hpp>
 
+#include "softraster/pipeline/clipping.h"
 #include "softraster/pipeline/shader.h"
+#include "softraster/pipeline/viewport.h"
 
 namespace softraster {
 
+// A vertex after the vertex shader: clip position and varyings, and (when outcode == 0)
+// its window position. Window data of a vertex outside the clip volume is not used: the
+// triangles that touch it go through the clipper.
 template <int N>
-struct ClipVertex {
-    glm::vec4 position;        // homogeneous clip coordinates
-    std::array<float, N> var;  // varyings
+struct ShadedVertex {
+    ClipVertex<N> clip;
+    unsigned outcode = 0;    // planes of ClipPlanes::for_viewport it is outside of
+    WindowVertex<N> window;  // valid when outcode == 0
+    int32_t X = 0, Y = 0;    // window position in 24.8 fixed point (snapped)
+    bool finite = true;      // all clip coordinates finite
 };
 
+// Maps a clipped (or inside) vertex to window space and snaps it. False if it cannot be
+// mapped (w <= 0 or non-finite results: degenerate user matrices).
+template <int N>
+bool finish_vertex(const ClipVertex<N>& c, const Viewport& vp, ShadedVertex<N>& out) {
+    out.clip = c;
+    out.outcode = 0;
+    if (!to_window(c, vp, out.window)) return false;
+    out.X = int32_t(snap_to_subpixel(out.window.x));
+    out.Y = int32_t(snap_to_subpixel(out.window.y));
+    return true;
+}
+
+// Shades vertices [begin, end) of `vertices` into out[begin, end).
 template <Shader S>
-void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices,
-                      std::vector<ClipVertex<kVaryingCount<typename S::Varyings>>>& out) {
-    out.resize(vertices.size());
-    for (size_t i = 0; i < vertices.size(); ++i) {
+void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices, size_t begin, size_t end,
+                      const ClipPlanes& planes, const Viewport& vp,
+                      std::span<ShadedVertex<kVaryingCount<typename S::Varyings>>> out) {
+    for (size_t i = begin; i < end; ++i) {
         typename S::Varyings v{};
-        out[i].position = shader.vertex(vertices[i], v);
-        out[i].var = to_array(v);
+        auto& o = out[i];
+        o.clip.position = shader.vertex(vertices[i], v);
+        o.clip.var = to_array(v);
+        const glm::vec4 p = o.clip.position;
+        o.finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+        if (!o.finite) continue;
+        o.outcode = planes.outcode(p);
+        if (o.outcode == 0 && !finish_vertex(o.clip, vp, o)) o.finite = false;
     }
 }
 

@@ -9,8 +9,9 @@
 #pragma once
 #include <array>
 #include <cmath>
+#include <cstdint>
 
-#include "softraster/pipeline/vertex_processing.h"
+#include "softraster/pipeline/clipping.h"
 
 namespace softraster {
 
@@ -24,6 +25,12 @@ struct WindowVertex {
 struct Viewport {
     int width = 1, height = 1;
 };
+
+inline constexpr int kSubpixelBits = 8;
+inline constexpr int64_t kSubpixelOne = int64_t(1) << kSubpixelBits;
+
+// Window coordinate (pixels) -> 24.8 fixed point, round to nearest.
+inline int64_t snap_to_subpixel(float v) { return int64_t(std::lrint(double(v) * double(kSubpixelOne))); }
 
 // Returns false for a vertex that cannot be mapped (w <= 0 or a non-finite result); after
 // clipping this only happens with degenerate user matrices, and the primitive is dropped.

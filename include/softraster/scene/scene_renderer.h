@@ -4,18 +4,27 @@
 #include <memory>
 #include <vector>
 
+#include "softraster/context.h"
 #include "softraster/framebuffer.h"
+#include "softraster/worker_pool.h"
 #include "softraster/scene/scene.h"
 #include "softraster/shading/surface_shader.h"
 
 namespace softraster {
 
+struct RenderStats {
+    uint64_t fragments_shaded = 0;  // fragment shader runs
+};
+
 class SceneRenderer {
 public:
-    explicit SceneRenderer(const Scene& scene);
+    // threads: how many threads draw (1 = all on the calling thread).
+    explicit SceneRenderer(const Scene& scene, unsigned threads = 1);
 
-    // Clears fb and draws every object in the spec's draw order.
-    void render(Framebuffer& fb) const;
+    // Clears fb and draws every object in the spec's draw order. The draws are recorded on
+    // the first call and replayed after, so buffers are reused from frame to frame; fb must
+    // have the scene's sample count. Not for use by two threads at once.
+    RenderStats render(Framebuffer& fb) const;
     // Allocates a framebuffer of the scene's size and samples, renders and resolves.
     Image render() const;
 
@@ -35,6 +44,8 @@ public:
 private:
     const Scene& scene_;
     std::vector<Draw> draws_;  // in draw order
+    std::unique_ptr<WorkerPool> pool_;
+    mutable std::unique_ptr<Context> ctx_;  // the recorded frame
 };
 
 inline Image render_scene(const Scene& scene) { return SceneRenderer(scene).render(); }

@@ -1,0 +1,178 @@
+// The recorded commands a Context executes: a clear, and draws of triangles, lines and
+// points. Each runs in three phases, every phase over all commands in parallel:
+//   1. vertex processing, in chunks of vertices;
+//   2. primitive assembly, clipping, culling and binning, in chunks of primitives;
+//   3. per tile, in draw order: triangle setup, rasterization, fragment shading, output merge.
+// A command is one virtual call per chunk or per tile; everything per pixel inside it is a
+// template specialized for the shader, the sample count and the blend mode.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "softraster/framebuffer.h"
+#include "softraster/pipeline/binning.h"
+#include "softraster/pipeline/fragment_shading.h"
+#include "softraster/pipeline/line_rasterization.h"
+
+namespace softraster {
+
+// Where commands draw during one execution.
+struct Target {
+    Framebuffer* fb = nullptr;
+    TileGrid grid;
+    ClipPlanes planes;  // with the guard band for this viewport
+    Viewport viewport;
+};
+
+class Command {
+public:
+    virtual ~Command() = default;
+    // Sizes the command's buffers (sequentially, before the parallel phases).
+    virtual void prepare() {}
+    virtual size_t vertex_chunks() const { return 0; }
+    virtual void process_vertex_chunk(size_t, const Target&) {}
+    virtual size_t primitive_chunks() const { return 0; }
+    virtual void bin_primitive_chunk(size_t, const Target&) {}
+    // Draws this command's part of one tile; returns the fragments shaded.
+    virtual uint64_t draw_tile(int tile, const Rect& rect, const Target&) = 0;
+};
+
+class ClearCommand final : public Command {
+public:
+    ClearCommand(const glm::vec4& color, float depth) : color_(quantize_rgba8(color)), depth_(depth) {}
+    uint64_t draw_tile(int, const Rect& r, const Target& t) override {
+        Framebuffer& fb = *t.fb;
+        const size_t n = size_t(r.x1 - r.x0) * size_t(fb.samples());
+        for (int y = r.y0; y < r.y1; ++y) {
+            std::fill_n(fb.color_data() + fb.sample_index(r.x0, y), n, color_);
+            std::fill_n(fb.depth_data() + fb.sample_index(r.x0, y), n, depth_);
+        }
+        return 0;
+    }
+
+private:
+    Rgba8 color_;
+    float depth_;
+};
+
+inline constexpr size_t kVertexChunk = 16384;
+inline constexpr size_t kTriangleChunk = 8192;
+
+template <Shader S, int Samples, BlendMode B>
+class TriangleCommand final : public Command {
+public:
+    static constexpr int N = kVaryingCount<typename S::Varyings>;
+    using Vertex = typename S::Vertex;
+
+    TriangleCommand(const S& shader, const RenderState& state, std::span<const Vertex> vertices, std::span<const uint32_t> indices)
+        : shader_(shader), state_(state), vertices_(vertices), indices_(indices) {}
+
+    size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
+    void process_vertex_chunk(size_t c, const Target& t) override {
+        const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
+        process_vertices(shader_, vertices_, begin, end, t.planes, t.viewport, std::span<ShadedVertex<N>>(post_));
+    }
+    void prepare() override {
+        post_.resize(vertices_.size());
+        bins_.resize(primitive_chunks());
+    }
+
+    size_t primitive_chunks() const override { return (indices_.size() / 3 + kTriangleChunk - 1) / kTriangleChunk; }
+    void bin_primitive_chunk(size_t c, const Target& t) override {
+        const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
+        bin_triangles(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), t.planes, t.viewport,
+                      FaceState{state_.cull, state_.front_face}, t.grid, bins_[c]);
+    }
+
+    uint64_t draw_tile(int tile, const Rect& rect, const Target& t) override {
+        uint64_t shaded = 0;
+        TriangleSetup<N> setup;
+        for (const TriangleBin<N>& bin : bins_) {
+            for (uint32_t k = bin.tile_begin[size_t(tile)]; k < bin.tile_begin[size_t(tile) + 1]; ++k) {
+                const TriangleRef& r = bin.refs[k];
+                if (!setup_triangle(bin.vertex(r.v[0], post_.data()), bin.vertex(r.v[1], post_.data()),
+                                    bin.vertex(r.v[2], post_.data()), state_.front_face, rect, setup))
+                    continue;
+                shaded += draw_triangle<Samples, B>(shader_, state_, *t.fb, setup);
+            }
+        }
+        return shaded;
+    }
+
+private:
+    S shader_;
+    RenderState state_;
+    std::span<const Vertex> vertices_;
+    std::span<const uint32_t> indices_;
+    std::vector<ShadedVertex<N>> post_;
+    std::vector<TriangleBin<N>> bins_;
+};
+
+// Lines and points: few and cheap, so the front end keeps them as one list (clipped and in
+// window space) and every tile walks all of them, drawing only its own pixels.
+template <Shader S, int Samples, BlendMode B>
+class LinePointCommand final : public Command {
+public:
+    static constexpr int N = kVaryingCount<typename S::Varyings>;
+    using Vertex = typename S::Vertex;
+
+    LinePointCommand(Topology topology, const S& shader, const RenderState& state, std::span<const Vertex> vertices,
+                     std::span<const uint32_t> indices)
+        : topology_(topology), shader_(shader), state_(state), vertices_(vertices), indices_(indices) {}
+
+    size_t primitive_chunks() const override { return 1; }
+    void bin_primitive_chunk(size_t, const Target& t) override {
+        std::vector<ShadedVertex<N>> post(vertices_.size());
+        process_vertices(shader_, vertices_, 0, vertices_.size(), t.planes, t.viewport, std::span<ShadedVertex<N>>(post));
+        window_.clear();
+        const ClipPlanes frustum = ClipPlanes::frustum();
+        const size_t per = topology_ == Topology::Lines ? 2 : 1;
+        for (size_t i = 0; i + per <= indices_.size(); i += per) {
+            ClipVertex<N> a = post[indices_[i]].clip, b = post[indices_[i + per - 1]].clip;
+            if (!post[indices_[i]].finite || !post[indices_[i + per - 1]].finite) continue;
+            if (per == 2 ? !clip_line(a, b, frustum) : frustum.outcode(a.position) != 0) continue;
+            WindowVertex<N> wa, wb;
+            if (!to_window(a, t.viewport, wa) || !to_window(b, t.viewport, wb)) continue;
+            window_.push_back(wa);
+            if (per == 2) window_.push_back(wb);
+        }
+    }
+
+    uint64_t draw_tile(int, const Rect& rect, const Target& t) override {
+        using V = typename S::Varyings;
+        uint64_t shaded = 0;
+        auto fragment = [&](int x, int y, float z, auto&& make_varyings) {
+            std::array<float, Samples> zs;
+            zs.fill(z);
+            shade_fragment<Samples, B>(shader_, state_, *t.fb, x, y, (1u << Samples) - 1, zs.data(), z, true, make_varyings, shaded);
+        };
+        if (topology_ == Topology::Points) {
+            for (const WindowVertex<N>& p : window_)
+                rasterize_point(p, rect, [&](int x, int y, float z) { fragment(x, y, z, [&] { return from_array<V>(p.var); }); });
+            return shaded;
+        }
+        for (size_t i = 0; i + 1 < window_.size(); i += 2) {
+            const WindowVertex<N>&a = window_[i], &b = window_[i + 1];
+            rasterize_line(a, b, rect, [&](int x, int y, float z, float s) {
+                fragment(x, y, z, [&] {
+                    std::array<float, N> v;
+                    for (size_t k = 0; k < size_t(N); ++k) v[k] = a.var[k] + s * (b.var[k] - a.var[k]);
+                    return from_array<V>(v);
+                });
+            });
+        }
+        return shaded;
+    }
+
+private:
+    Topology topology_;
+    S shader_;
+    RenderState state_;
+    std::span<const Vertex> vertices_;
+    std::span<const uint32_t> indices_;
+    std::vector<WindowVertex<N>> window_;
+};
+
+}  // namespace softraster

@@ -1,0 +1,64 @@
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli/commands.h"
+#include "softraster/scene/scene_renderer.h"
+
+namespace softraster::cli {
+
+Run add_bench_command(CLI::App& app) {
+    struct Options {
+        std::string scene;
+        int frames = 20, warmup = 3, threads = 0;
+        bool json = false;
+    };
+    auto opt = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand("bench", "Time frames of a scene: clear, all draws and the MSAA resolve");
+    cmd->add_option("scene", opt->scene, "Scene file (.json)")->required();
+    cmd->add_option("--frames", opt->frames, "Timed frames")->check(CLI::Range(1, 100000))->capture_default_str();
+    cmd->add_option("--warmup", opt->warmup, "Untimed frames first")->check(CLI::Range(0, 100000))->capture_default_str();
+    cmd->add_option("--threads", opt->threads, "Worker threads (0: one per core)")->check(CLI::Range(0, 256))->capture_default_str();
+    cmd->add_flag("--json", opt->json, "Print one JSON line instead of text");
+    return [opt] {
+        const Scene scene = load_scene(opt->scene);
+        const unsigned threads = opt->threads > 0 ? unsigned(opt->threads) : std::max(1u, std::thread::hardware_concurrency());
+        const SceneRenderer renderer(scene, threads);
+        Framebuffer fb(scene.width, scene.height, scene.samples);
+        std::vector<double> ms;
+        RenderStats stats;
+        for (int i = 0; i < opt->warmup + opt->frames; ++i) {
+            const auto t0 = std::chrono::steady_clock::now();
+            stats = renderer.render(fb);
+            const Image picture = fb.read_pixels();  // the resolve, part of every frame
+            const double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            if (i >= opt->warmup) ms.push_back(dt);
+            if (picture.pixels.empty()) return 1;
+        }
+        std::sort(ms.begin(), ms.end());
+        const double median = ms[ms.size() / 2];
+        const double tris_per_s = double(renderer.triangle_count()) / (median / 1000.0);
+        const double frags_per_s = double(stats.fragments_shaded) / (median / 1000.0);
+        if (opt->json) {
+            std::printf("{\"renderer\": \"softraster\", \"scene\": \"%s\", \"threads\": %u, \"frames\": %d, \"median_ms\": %.3f, "
+                        "\"min_ms\": %.3f, \"max_ms\": %.3f, \"triangles\": %zu, \"triangles_per_s\": %.0f, "
+                        "\"fragments_shaded\": %llu, \"fragments_per_s\": %.0f}\n",
+                        opt->scene.c_str(), threads, opt->frames, median, ms.front(), ms.back(), renderer.triangle_count(),
+                        tris_per_s, static_cast<unsigned long long>(stats.fragments_shaded), frags_per_s);
+        } else {
+            std::printf("%s: %dx%d, %d sample(s), %zu triangles, %u thread(s), %d frames after %d warm-up\n",
+                        opt->scene.c_str(), scene.width, scene.height, scene.samples, renderer.triangle_count(), threads,
+                        opt->frames, opt->warmup);
+            std::printf("  median %.2f ms   min %.2f ms   max %.2f ms\n", median, ms.front(), ms.back());
+            std::printf("  %.1f M triangles/s   %.1f M fragments shaded/s (%llu per frame)\n", tris_per_s / 1e6,
+                        frags_per_s / 1e6, static_cast<unsigned long long>(stats.fragments_shaded));
+        }
+        return 0;
+    };
+}
+
+}  // namespace softraster::cli
