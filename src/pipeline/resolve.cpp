@@ -1,11 +1,17 @@
 // Stage 10, resolve: the multisampled buffer becomes the picture.
 // Each channel of a pixel is floor(mean + 0.5) of its stored 8-bit samples.
+#include <algorithm>
+
 #include "softraster/framebuffer.h"
 
 namespace softraster {
 
 Image Framebuffer::read_pixels() const {
     Image img(width_, height_);
+    if (samples_ == 1) {  // nothing to average
+        std::copy(color_.begin(), color_.end(), img.pixels.begin());
+        return img;
+    }
     const int n = samples_;
     for (size_t p = 0; p < img.pixels.size(); ++p) {
         const Rgba8* s = &color_[p * size_t(n)];

@@ -64,12 +64,28 @@ LightSet light_set(const Lights& lights) {
     return set;
 }
 
+// The shader specialized for the model, the texture and the vertex colors: what it does
+// not need is neither computed nor interpolated.
 template <Shading M>
 void draw_model(Context& ctx, const SceneRenderer::Draw& d) {
     const std::span<const MeshVertex> vertices(d.mesh->vertices);
     const std::span<const uint32_t> indices(d.mesh->indices);
-    if (d.uniforms.texture) ctx.draw(Topology::Triangles, SurfaceShader<M, true>{&d.uniforms}, vertices, indices);
-    else ctx.draw(Topology::Triangles, SurfaceShader<M, false>{&d.uniforms}, vertices, indices);
+    auto draw = [&]<bool Textured, bool Colored>() {
+        ctx.draw(Topology::Triangles, SurfaceShader<M, Textured, Colored>{&d.uniforms}, vertices, indices);
+    };
+    if constexpr (M == Shading::Normals || M == Shading::Depth) {
+        draw.template operator()<false, false>();
+    } else {
+        const bool textured = d.uniforms.texture != nullptr;
+        if (textured && d.colored) draw.template operator()<true, true>();
+        else if (textured) draw.template operator()<true, false>();
+        else if (d.colored) draw.template operator()<false, true>();
+        else draw.template operator()<false, false>();
+    }
+}
+
+bool has_vertex_colors(const Mesh& mesh) {
+    return std::any_of(mesh.vertices.begin(), mesh.vertices.end(), [](const MeshVertex& v) { return v.color != glm::vec4(1.0f); });
 }
 
 void draw_object(Context& ctx, const SceneRenderer::Draw& d) {
@@ -99,7 +115,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     };
     std::vector<Keyed> opaque, blended;
     for (const SceneObject& o : scene.objects) {
-        Draw d{o.mesh.get(), nullptr, {}, {}, o.material.shading};
+        Draw d{o.mesh.get(), nullptr, {}, {}, o.material.shading, has_vertex_colors(*o.mesh)};
         SurfaceUniforms& u = d.uniforms;
         u.mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
         u.model = o.model;

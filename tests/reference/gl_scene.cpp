@@ -16,7 +16,10 @@ namespace {
 
 using softraster::Shading;
 
-const char* kVertexShader = R"(#version 330 core
+// Each (shading model, texture, light count) combination is compiled as its own program,
+// with the choices as #defines, as a real OpenGL application would: llvmpipe then runs no
+// branch on material state per fragment (fair timing), and the formulas read as in the spec.
+const char* kVertexShader = R"(
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
@@ -25,7 +28,6 @@ uniform mat4 u_mvp;
 uniform mat4 u_model;
 uniform mat3 u_normal_matrix;
 uniform vec3 u_ambient;
-uniform int u_light_count;
 uniform vec3 u_to_light[8];
 uniform vec3 u_light_color[8];
 out vec3 v_world;
@@ -38,9 +40,11 @@ void main() {
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
     v_color = a_color;
-    vec3 n = normalize(v_normal);
     v_intensity = u_ambient;
-    for (int i = 0; i < u_light_count; ++i) v_intensity += u_light_color[i] * max(0.0, dot(n, u_to_light[i]));
+#if SHADING == 2
+    vec3 n = normalize(v_normal);
+    for (int i = 0; i < LIGHTS; ++i) v_intensity += u_light_color[i] * max(0.0, dot(n, u_to_light[i]));
+#endif
     vec4 clip = u_mvp * vec4(a_pos, 1.0);
     // Flip y: GL window row 0 (the first row in memory) becomes the top row of the picture,
     // so llvmpipe's fill rule and sample pattern apply in the picture as stored.
@@ -48,51 +52,64 @@ void main() {
 }
 )";
 
-const char* kFragmentShader = R"(#version 330 core
+const char* kFragmentShader = R"(
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_color;
 in vec3 v_intensity;
-uniform int u_shading;  // 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth
-uniform bool u_textured;
+// SHADING: 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth
 uniform sampler2D u_texture;
 uniform vec4 u_color;
 uniform vec3 u_specular;
 uniform float u_shininess;
 uniform vec3 u_eye;
 uniform vec3 u_ambient;
-uniform int u_light_count;
 uniform vec3 u_to_light[8];
 uniform vec3 u_light_color[8];
 out vec4 frag;
 void main() {
-    if (u_shading == 6) { frag = vec4(vec3(gl_FragCoord.z), 1.0); return; }
-    vec3 n = normalize(v_normal);
-    if (u_shading == 5) { frag = vec4(0.5 * n + 0.5, 1.0); return; }
+#if SHADING == 6
+    frag = vec4(vec3(gl_FragCoord.z), 1.0);
+#elif SHADING == 5
+    frag = vec4(0.5 * normalize(v_normal) + 0.5, 1.0);
+#else
     vec4 base = u_color * v_color;
-    if (u_textured) base *= texture(u_texture, v_uv);
-    if (u_shading == 0) { frag = base; return; }
-    if (u_shading == 2) { frag = vec4(base.rgb * v_intensity, base.a); return; }
+#if TEXTURED
+    base *= texture(u_texture, v_uv);
+#endif
+#if SHADING == 0
+    frag = base;
+#elif SHADING == 2
+    frag = vec4(base.rgb * v_intensity, base.a);
+#else
+    vec3 n = normalize(v_normal);
     vec3 intensity = u_ambient;
     vec3 spec = vec3(0.0);
+#if SHADING == 4
     vec3 v = normalize(u_eye - v_world);
-    for (int i = 0; i < u_light_count; ++i) {
+#endif
+    for (int i = 0; i < LIGHTS; ++i) {
         float nl = dot(n, u_to_light[i]);
         intensity += u_light_color[i] * max(0.0, nl);
-        if (u_shading == 4 && nl > 0.0) {
+#if SHADING == 4
+        if (nl > 0.0) {
             vec3 h = normalize(u_to_light[i] + v);
             float nh = max(0.0, dot(n, h));
             spec += u_light_color[i] * u_specular * (u_shininess == 0.0 ? 1.0 : pow(nh, u_shininess));
         }
+#endif
     }
     frag = vec4(base.rgb * intensity + spec, base.a);
+#endif
+#endif
 }
 )";
 
-GLuint compile(GLenum type, const char* src) {
+GLuint compile(GLenum type, const std::string& defines, const char* src) {
     const GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &src, nullptr);
+    const char* parts[] = {"#version 330 core\n", defines.c_str(), src};
+    glShaderSource(s, 3, parts, nullptr);
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -124,9 +141,23 @@ softraster::Mesh flat_mesh(const softraster::Mesh& m, const glm::mat4& model) {
     return out;
 }
 
+GLuint link_program(int shading, bool textured, int lights) {
+    const std::string defines = "#define SHADING " + std::to_string(shading) + "\n#define TEXTURED " +
+                                std::to_string(int(textured)) + "\n#define LIGHTS " + std::to_string(lights) + "\n";
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, compile(GL_VERTEX_SHADER, defines, kVertexShader));
+    glAttachShader(program, compile(GL_FRAGMENT_SHADER, defines, kFragmentShader));
+    glLinkProgram(program);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) throw std::runtime_error("GLSL link error");
+    return program;
+}
+
 }  // namespace
 
 struct GlScene::Draw {
+    GLuint program = 0;
     GLuint vao = 0, vbo = 0, ibo = 0, texture = 0;
     GLsizei index_count = 0;
     const softraster::SceneObject* object = nullptr;
@@ -143,13 +174,6 @@ struct GlScene::Draw {
 };
 
 GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
-    program_ = glCreateProgram();
-    glAttachShader(program_, compile(GL_VERTEX_SHADER, kVertexShader));
-    glAttachShader(program_, compile(GL_FRAGMENT_SHADER, kFragmentShader));
-    glLinkProgram(program_);
-    GLint ok = 0;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (!ok) throw std::runtime_error("GLSL link error");
 
     const glm::mat4 view = softraster::view_matrix(scene.camera);
     const glm::mat4 proj = softraster::projection_matrix(scene.camera, scene.width, scene.height);
@@ -157,6 +181,10 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
     for (const softraster::SceneObject& o : scene.objects) {
         auto d = std::make_unique<Draw>();
         d->object = &o;
+        const int key = int(o.material.shading) * 2 + (o.material.texture ? 1 : 0);
+        GLuint& program = programs_[key];
+        if (!program) program = link_program(int(o.material.shading), o.material.texture != nullptr, int(scene.lights.directional.size()));
+        d->program = program;
         d->model = o.model;
         d->mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
         d->normal_matrix = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(o.model)))));
@@ -232,7 +260,7 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
 
 GlScene::~GlScene() {
     draws_.clear();
-    glDeleteProgram(program_);
+    for (const auto& [key, program] : programs_) glDeleteProgram(program);
 }
 
 void GlScene::draw_frame() const {
@@ -244,29 +272,26 @@ void GlScene::draw_frame() const {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glEnable(GL_MULTISAMPLE);
-    glUseProgram(program_);
-    auto loc = [&](const char* n) { return glGetUniformLocation(program_, n); };
     const softraster::Lights& lights = scene_.lights;
-    glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(lights.ambient));
-    glUniform1i(loc("u_light_count"), GLint(lights.directional.size()));
-    for (size_t i = 0; i < lights.directional.size(); ++i) {
-        const glm::vec3 l = -glm::normalize(lights.directional[i].direction);
-        glUniform3fv(loc(("u_to_light[" + std::to_string(i) + "]").c_str()), 1, glm::value_ptr(l));
-        glUniform3fv(loc(("u_light_color[" + std::to_string(i) + "]").c_str()), 1, glm::value_ptr(lights.directional[i].color));
-    }
-    glUniform3fv(loc("u_eye"), 1, glm::value_ptr(scene_.camera.eye));
-    glUniform1i(loc("u_texture"), 0);
     for (const auto& d : draws_) {
+        glUseProgram(d->program);
+        auto loc = [&](const char* n) { return glGetUniformLocation(d->program, n); };
+        glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(lights.ambient));
+        for (size_t i = 0; i < lights.directional.size(); ++i) {
+            const glm::vec3 l = -glm::normalize(lights.directional[i].direction);
+            glUniform3fv(loc(("u_to_light[" + std::to_string(i) + "]").c_str()), 1, glm::value_ptr(l));
+            glUniform3fv(loc(("u_light_color[" + std::to_string(i) + "]").c_str()), 1, glm::value_ptr(lights.directional[i].color));
+        }
+        glUniform3fv(loc("u_eye"), 1, glm::value_ptr(scene_.camera.eye));
+        glUniform1i(loc("u_texture"), 0);
         const softraster::SceneObject& o = *d->object;
         const softraster::Material& m = o.material;
         glUniformMatrix4fv(loc("u_mvp"), 1, GL_FALSE, glm::value_ptr(d->mvp));
         glUniformMatrix4fv(loc("u_model"), 1, GL_FALSE, glm::value_ptr(d->model));
         glUniformMatrix3fv(loc("u_normal_matrix"), 1, GL_FALSE, glm::value_ptr(d->normal_matrix));
-        glUniform1i(loc("u_shading"), int(m.shading));
         glUniform4fv(loc("u_color"), 1, glm::value_ptr(m.color));
         glUniform3fv(loc("u_specular"), 1, glm::value_ptr(m.specular));
         glUniform1f(loc("u_shininess"), m.shininess);
-        glUniform1i(loc("u_textured"), d->texture != 0);
         if (d->texture) {
             glBindTexture(GL_TEXTURE_2D, d->texture);
             const GLint filter = m.filter == softraster::Filter::Nearest ? GL_NEAREST : GL_LINEAR;

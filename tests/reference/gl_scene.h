@@ -2,6 +2,7 @@
 // spec's formulas. Independent of softraster's pipeline: it shares only the scene loader
 // (meshes, textures, the spec's matrices), which has its own unit tests.
 #pragma once
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -23,7 +24,7 @@ public:
 private:
     struct Draw;
     const softraster::Scene& scene_;
-    GLuint program_ = 0;
+    std::map<int, GLuint> programs_;  // by shading model and texture
     std::vector<std::unique_ptr<Draw>> draws_;
 };
 

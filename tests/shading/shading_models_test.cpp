@@ -24,14 +24,28 @@ SurfaceUniforms uniforms() {
     return u;
 }
 
-SurfaceVaryings surface(glm::vec3 normal) {
-    return {glm::vec3(0, 0, 0), normal, glm::vec2(0), glm::vec4(1, 1, 1, 1), glm::vec3(0)};
+// Every varying at hand; each shader takes the ones it has.
+struct Inputs {
+    glm::vec3 world{0.0f}, normal{0, 0, 1}, intensity{0.0f};
+    glm::vec4 color{1.0f};
+};
+
+Inputs surface(glm::vec3 normal) {
+    Inputs in;
+    in.normal = normal;
+    return in;
 }
 
 template <Shading M>
-glm::vec4 shade(const SurfaceUniforms& u, const SurfaceVaryings& v, float z = 0.25f) {
+glm::vec4 shade(const SurfaceUniforms& u, const Inputs& in, float z = 0.25f) {
+    using S = SurfaceShader<M, false, true>;
+    typename S::Varyings v{};
+    if constexpr (S::Varyings::kWorld) v.world = in.world;
+    if constexpr (S::Varyings::kNormal) v.normal = in.normal;
+    if constexpr (S::Varyings::kIntensity) v.intensity = in.intensity;
+    if constexpr (S::Varyings::kColor) v.color = in.color;
     glm::vec4 c;
-    EXPECT_TRUE((SurfaceShader<M, false>{&u}.fragment(v, FragCoord{0, 0, z, true}, c)));
+    EXPECT_TRUE((S{&u}.fragment(v, FragCoord{0, 0, z, true}, c)));
     return c;
 }
 
@@ -43,7 +57,7 @@ void expect_vec4(glm::vec4 a, glm::vec4 b) {
 
 TEST(ShadingModels, Unlit) {
     const SurfaceUniforms u = uniforms();
-    SurfaceVaryings v = surface({0, 0, 1});
+    Inputs v = surface({0, 0, 1});
     v.color = glm::vec4(0.5f, 1, 1, 1);
     expect_vec4(shade<Shading::Unlit>(u, v), glm::vec4(0.4f, 0.6f, 0.4f, 0.5f));
 }
@@ -65,13 +79,13 @@ TEST(ShadingModels, GrazingLightGivesAmbientOnly) {
 
 TEST(ShadingModels, GouraudUsesTheInterpolatedIntensity) {
     const SurfaceUniforms u = uniforms();
-    SurfaceVaryings v = surface({0, 1, 0});
+    Inputs v = surface({0, 1, 0});
     v.intensity = glm::vec3(0.5f, 1.0f, 2.0f);
     expect_vec4(shade<Shading::Gouraud>(u, v), glm::vec4(0.4f, 0.6f, 0.8f, 0.5f));
     // The vertex stage computes the intensity from the transformed normal.
     MeshVertex in;
     in.normal = glm::vec3(0, 0, 1);
-    SurfaceVaryings out;
+    SurfaceShader<Shading::Gouraud, false>::Varyings out;
     SurfaceShader<Shading::Gouraud, false>{&u}.vertex(in, out);
     EXPECT_NEAR(out.intensity.r, 0.6f, 1e-6f);
     EXPECT_NEAR(out.intensity.b, 0.8f, 1e-6f);
@@ -79,7 +93,7 @@ TEST(ShadingModels, GouraudUsesTheInterpolatedIntensity) {
 
 TEST(ShadingModels, BlinnPhong) {
     const SurfaceUniforms u = uniforms();
-    SurfaceVaryings v = surface({0, 0, 1});
+    Inputs v = surface({0, 0, 1});
     v.world = glm::vec3(3, 0, 1);  // V = normalize(eye - P) = normalize(-3, 0, 4)
     const glm::vec3 V = glm::normalize(glm::vec3(-3, 0, 4));
     const glm::vec3 H = glm::normalize(glm::vec3(0, 0, 1) + V);
@@ -93,11 +107,19 @@ TEST(ShadingModels, BlinnPhongShininessZeroIsPowZeroZeroIsOne) {
     u.shininess = 0.0f;
     u.lights.count = 1;
     u.lights.to_light[0] = glm::normalize(glm::vec3(0, 1, 0.001f));  // N.L > 0 barely
-    SurfaceVaryings v = surface({0, 0, 1});
+    Inputs v = surface({0, 0, 1});
     v.world = glm::vec3(0, -5, 0);  // V points up-ish so that N.H can be ~0
     const glm::vec4 c = shade<Shading::BlinnPhong>(u, v);
     const float diffuse = 0.5f * u.lights.to_light[0].z;
     EXPECT_NEAR(c.r, 0.8f * (0.1f + diffuse) + 0.5f * 0.3f, 1e-5f);  // pow(x, 0) = 1
+}
+
+TEST(ShadingModels, VaryingsHoldOnlyWhatTheModelReads) {
+    EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::Depth, false, false>::Varyings>), 1);  // placeholder only
+    EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::Lambert, false, false>::Varyings>), 3);
+    EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::Lambert, true, true>::Varyings>), 9);
+    EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::BlinnPhong, true, true>::Varyings>), 12);
+    EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::Gouraud, false, false>::Varyings>), 3);
 }
 
 TEST(ShadingModels, NormalsAndDepth) {
@@ -109,7 +131,5 @@ TEST(ShadingModels, NormalsAndDepth) {
 TEST(ShadingModels, BackFacesAreLitWithTheNormalAsItIs) {
     SurfaceUniforms u = uniforms();
     u.lights.count = 1;  // the light in front
-    glm::vec4 c;
-    SurfaceShader<Shading::Lambert, false>{&u}.fragment(surface({0, 0, -1}), FragCoord{0, 0, 0.5f, false}, c);
-    EXPECT_NEAR(c.r, 0.8f * 0.1f, 1e-6f);  // not flipped: only ambient
+    EXPECT_NEAR(shade<Shading::Lambert>(u, surface({0, 0, -1})).r, 0.8f * 0.1f, 1e-6f);  // not flipped: only ambient
 }

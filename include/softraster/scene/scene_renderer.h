@@ -38,6 +38,7 @@ public:
         SurfaceUniforms uniforms;
         RenderState state;
         Shading shading;
+        bool colored;                        // the mesh has vertex colors other than white
     };
     const std::vector<Draw>& draws() const { return draws_; }
 

@@ -11,6 +11,18 @@
 
 namespace softraster {
 
+// a^b for the specular exponent: repeated squaring for whole exponents up to 256 (the
+// common case, far cheaper than powf), powf otherwise; pow(0, 0) = 1 either way.
+inline float specular_power(float a, float b) {
+    if (b >= 0.0f && b <= 256.0f && b == float(int(b))) {
+        float result = 1.0f, base = a;
+        for (unsigned e = unsigned(b); e; e >>= 1, base *= base)
+            if (e & 1u) result *= base;
+        return result;
+    }
+    return std::pow(a, b);
+}
+
 struct LightSet {
     static constexpr int kMax = 8;
     glm::vec3 ambient{0.0f};
@@ -33,7 +45,7 @@ inline glm::vec3 specular_term(const LightSet& lights, const glm::vec3& n, const
         const glm::vec3 l = lights.to_light[size_t(i)];
         if (!(glm::dot(n, l) > 0.0f)) continue;
         const glm::vec3 h = glm::normalize(l + to_eye);
-        sum += lights.color[size_t(i)] * specular * std::pow(std::max(0.0f, glm::dot(n, h)), shininess);
+        sum += lights.color[size_t(i)] * specular * specular_power(std::max(0.0f, glm::dot(n, h)), shininess);
     }
     return sum;
 }

@@ -4,6 +4,9 @@
 // texture is sampled are template arguments, so each combination's fragment code is compiled
 // on its own with no per-pixel branch on the shading model.
 #pragma once
+#include <cmath>
+#include <type_traits>
+
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
@@ -16,12 +19,30 @@
 
 namespace softraster {
 
+// A varying present only when a condition holds; otherwise an empty member that takes no
+// space, so each shader interpolates exactly what its formula reads.
+template <int Tag>
+struct NoVarying {};
+template <bool Present, class T, int Tag>
+using MaybeVarying = std::conditional_t<Present, T, NoVarying<Tag>>;
+
+template <Shading M, bool Textured, bool Colored>
 struct SurfaceVaryings {
-    glm::vec3 world;      // world-space position P
-    glm::vec3 normal;     // world-space normal, normalized per fragment
-    glm::vec2 uv;
-    glm::vec4 color;      // vertex color
-    glm::vec3 intensity;  // Gouraud: lighting computed at the vertex
+    static constexpr bool kLit = M == Shading::Flat || M == Shading::Lambert || M == Shading::BlinnPhong;
+    static constexpr bool kBase = M != Shading::Normals && M != Shading::Depth;  // reads color and texture
+    static constexpr bool kWorld = M == Shading::BlinnPhong;
+    static constexpr bool kNormal = kLit || M == Shading::Normals;
+    static constexpr bool kIntensity = M == Shading::Gouraud;
+    static constexpr bool kUv = kBase && Textured;
+    static constexpr bool kColor = kBase && Colored;
+    static constexpr bool kAny = kWorld || kNormal || kIntensity || kUv || kColor;
+
+    [[no_unique_address]] MaybeVarying<kWorld, glm::vec3, 0> world;          // world-space position P
+    [[no_unique_address]] MaybeVarying<kNormal, glm::vec3, 1> normal;        // world-space normal
+    [[no_unique_address]] MaybeVarying<kIntensity, glm::vec3, 2> intensity;  // Gouraud: lighting at the vertex
+    [[no_unique_address]] MaybeVarying<kUv, glm::vec2, 3> uv;
+    [[no_unique_address]] MaybeVarying<kColor, glm::vec4, 4> color;          // vertex color
+    [[no_unique_address]] MaybeVarying<!kAny, float, 5> unused;              // a struct has at least one float
 };
 
 // Everything a draw's shader reads that is the same for all its vertices and fragments.
@@ -39,44 +60,43 @@ struct SurfaceUniforms {
     Wrap wrap = Wrap::Repeat;
 };
 
-template <Shading Model, bool Textured>
+// Colored: the mesh has vertex colors other than white (otherwise the term is 1 and is
+// not interpolated at all).
+template <Shading Model, bool Textured, bool Colored = true>
 struct SurfaceShader {
     using Vertex = MeshVertex;
-    using Varyings = SurfaceVaryings;
+    using Varyings = SurfaceVaryings<Model, Textured, Colored>;
     const SurfaceUniforms* u;
 
-    glm::vec4 vertex(const MeshVertex& in, SurfaceVaryings& out) const {
-        const glm::vec4 world = u->model * glm::vec4(in.position, 1.0f);
-        out.world = glm::vec3(world);
-        out.normal = u->normal_matrix * in.normal;
-        out.uv = in.uv;
-        out.color = in.color;
-        if constexpr (Model == Shading::Gouraud) out.intensity = diffuse_intensity(u->lights, glm::normalize(out.normal));
-        else out.intensity = glm::vec3(0.0f);
+    glm::vec4 vertex(const MeshVertex& in, Varyings& out) const {
+        if constexpr (Varyings::kWorld) out.world = glm::vec3(u->model * glm::vec4(in.position, 1.0f));
+        if constexpr (Varyings::kNormal) out.normal = u->normal_matrix * in.normal;
+        if constexpr (Varyings::kIntensity) out.intensity = diffuse_intensity(u->lights, glm::normalize(u->normal_matrix * in.normal));
+        if constexpr (Varyings::kUv) out.uv = in.uv;
+        if constexpr (Varyings::kColor) out.color = in.color;
         return u->mvp * glm::vec4(in.position, 1.0f);
     }
 
-    bool fragment(const SurfaceVaryings& in, const FragCoord& frag, glm::vec4& out) const {
+    bool fragment(const Varyings& in, const FragCoord& frag, glm::vec4& out) const {
         if constexpr (Model == Shading::Depth) {
             out = glm::vec4(frag.z, frag.z, frag.z, 1.0f);
-            return true;
-        }
-        const glm::vec3 n = glm::normalize(in.normal);
-        if constexpr (Model == Shading::Normals) {
-            out = glm::vec4(0.5f * n + 0.5f, 1.0f);
-            return true;
-        }
-        glm::vec4 base = u->color * in.color;
-        if constexpr (Textured) base *= u->texture->sample(in.uv, u->filter, u->wrap);
-        if constexpr (Model == Shading::Unlit) {
-            out = base;
-        } else if constexpr (Model == Shading::Gouraud) {
-            out = glm::vec4(glm::vec3(base) * in.intensity, base.a);
-        } else {  // Lambert, Flat (N is the face normal), BlinnPhong
-            glm::vec3 rgb = glm::vec3(base) * diffuse_intensity(u->lights, n);
-            if constexpr (Model == Shading::BlinnPhong)
-                rgb += specular_term(u->lights, n, glm::normalize(u->eye - in.world), u->specular, u->shininess);
-            out = glm::vec4(rgb, base.a);
+        } else if constexpr (Model == Shading::Normals) {
+            out = glm::vec4(0.5f * glm::normalize(in.normal) + 0.5f, 1.0f);
+        } else {
+            glm::vec4 base = u->color;
+            if constexpr (Varyings::kColor) base *= in.color;
+            if constexpr (Varyings::kUv) base *= u->texture->sample(in.uv, u->filter, u->wrap);
+            if constexpr (Model == Shading::Unlit) {
+                out = base;
+            } else if constexpr (Model == Shading::Gouraud) {
+                out = glm::vec4(glm::vec3(base) * in.intensity, base.a);
+            } else {  // Lambert, Flat (N is the face normal), BlinnPhong
+                const glm::vec3 n = glm::normalize(in.normal);
+                glm::vec3 rgb = glm::vec3(base) * diffuse_intensity(u->lights, n);
+                if constexpr (Model == Shading::BlinnPhong)
+                    rgb += specular_term(u->lights, n, glm::normalize(u->eye - in.world), u->specular, u->shininess);
+                out = glm::vec4(rgb, base.a);
+            }
         }
         return true;
     }
