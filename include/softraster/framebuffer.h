@@ -20,7 +20,7 @@ namespace softraster {
 inline uint8_t quantize_unorm8(float c) {
     if (!(c > 0.0f)) return 0;
     if (c >= 1.0f) return 255;
-    return static_cast<uint8_t>(std::floor(255.0f * c + 0.5f));
+    return static_cast<uint8_t>(static_cast<int>(255.0f * c + 0.5f));  // positive: truncation is floor
 }
 
 inline Rgba8 quantize_rgba8(const glm::vec4& c) {

@@ -1,7 +1,8 @@
 // Stage 7, rasterization: which samples of which pixels a set-up triangle covers.
 //
-// The edge functions are affine, so stepping one pixel right adds 256 A_i and one row down
-// adds 256 B_i: the inner loop is integer additions and sign tests. Pixel (x, y) is sampled
+// The edge functions are affine in the pixel position, so along a row each is an arithmetic
+// progression and the pixels inside it form one span, found by an integer division; the
+// pixels of a row inside all three edges are the intersection of three spans. Pixel (x, y) is sampled
 // at its center (x + 0.5, y + 0.5), or with 4x MSAA at the four positions of the spec's
 // pattern; each sample is covered when E_i + bias_i >= 0 for all three edges.
 #pragma once
@@ -33,47 +34,71 @@ struct CoveredPixel {
     std::array<float, Samples> z{};
 };
 
+// First k >= 0 with e + step * k >= 0, and first k at which it stops holding, for k in
+// [0, n): the span of pixels (or samples) inside one edge along a row. Exact integers.
+struct Span {
+    int begin, end;
+};
+inline Span edge_span(int64_t e, int64_t step, int n) {
+    if (step == 0) return e >= 0 ? Span{0, n} : Span{0, 0};
+    if (step > 0) {  // inside from some k on: k >= ceil(-e / step)
+        if (e >= 0) return {0, n};
+        const int64_t k = (-e + step - 1) / step;
+        return {int(std::min<int64_t>(k, n)), n};
+    }
+    if (e < 0) return {0, 0};  // step < 0: inside up to k <= floor(e / -step)
+    const int64_t k = e / -step + 1;
+    return {0, int(std::min<int64_t>(k, n))};
+}
+
 // Calls on_pixel(const CoveredPixel<Samples>&) for every pixel of `rect` with coverage.
+// Row by row: the edge functions give, for each sample position, the exact span of pixels
+// inside all three edges (three integer divisions per row and sample), so the pixels in
+// between need no test at all.
 template <int Samples, int N, class OnPixel>
 void rasterize_triangle(const TriangleSetup<N>& t, const Rect& rect, OnPixel&& on_pixel) {
     const int x0 = std::max(rect.x0, t.bounds.x0), x1 = std::min(rect.x1, t.bounds.x1);
     const int y0 = std::max(rect.y0, t.bounds.y0), y1 = std::min(rect.y1, t.bounds.y1);
     if (x0 >= x1 || y0 >= y1) return;
+    const int n = x1 - x0;
 
     using P = SamplePattern<Samples>;
-    std::array<std::array<int64_t, Samples>, 3> sample_offset;  // E(sample) - E(center)
-    std::array<int64_t, 3> row;                                 // E at the center of (x0, y)
-    for (size_t i = 0; i < 3; ++i) {
-        for (size_t s = 0; s < size_t(Samples); ++s)
-            sample_offset[i][s] = t.A[i] * (P::x[s] - 128) + t.B[i] * (P::y[s] - 128);
-        row[i] = t.edge(int(i), int64_t(x0) * kSubpixelOne + 128, int64_t(y0) * kSubpixelOne + 128);
-    }
+    std::array<std::array<int64_t, 3>, Samples> row;  // E + bias at sample s of pixel (x0, y)
+    for (size_t s = 0; s < size_t(Samples); ++s)
+        for (size_t i = 0; i < 3; ++i)
+            row[s][i] = t.edge(int(i), int64_t(x0) * kSubpixelOne + P::x[s], int64_t(y0) * kSubpixelOne + P::y[s]) + t.bias[i];
+    const std::array<int64_t, 3> step_x = {t.A[0] * kSubpixelOne, t.A[1] * kSubpixelOne, t.A[2] * kSubpixelOne};
+    const std::array<int64_t, 3> step_y = {t.B[0] * kSubpixelOne, t.B[1] * kSubpixelOne, t.B[2] * kSubpixelOne};
 
     CoveredPixel<Samples> px;
+    const float j0 = float(y0 - t.origin_y), i0 = float(x0 - t.origin_x);
     for (int y = y0; y < y1; ++y) {
-        std::array<int64_t, 3> e = row;
-        for (int x = x0; x < x1; ++x) {
-            unsigned mask = 0;
-            for (size_t s = 0; s < size_t(Samples); ++s) {
-                const int64_t s0 = e[0] + sample_offset[0][s] + t.bias[0];
-                const int64_t s1 = e[1] + sample_offset[1][s] + t.bias[1];
-                const int64_t s2 = e[2] + sample_offset[2][s] + t.bias[2];
-                if ((s0 | s1 | s2) >= 0) mask |= 1u << s;
+        std::array<Span, Samples> spans;
+        int lo = n, hi = 0;
+        for (size_t s = 0; s < size_t(Samples); ++s) {
+            Span sp{0, n};
+            for (size_t i = 0; i < 3; ++i) {
+                const Span e = edge_span(row[s][i], step_x[i], n);
+                sp = {std::max(sp.begin, e.begin), std::min(sp.end, e.end)};
             }
-            if (mask) {
-                px.x = x;
-                px.y = y;
-                px.mask = mask;
-                const float i = float(x - t.origin_x), j = float(y - t.origin_y);
-                for (size_t s = 0; s < size_t(Samples); ++s)
-                    if (mask & (1u << s))
-                        px.z[s] = interpolate_depth(t, i + float(P::x[s] - 128) * (1.0f / 256.0f),
-                                                    j + float(P::y[s] - 128) * (1.0f / 256.0f));
-                on_pixel(px);
-            }
-            for (size_t i = 0; i < 3; ++i) e[i] += t.A[i] * kSubpixelOne;
+            spans[s] = sp;
+            if (sp.begin < sp.end) lo = std::min(lo, sp.begin), hi = std::max(hi, sp.end);
+            for (size_t i = 0; i < 3; ++i) row[s][i] += step_y[i];
         }
-        for (size_t i = 0; i < 3; ++i) row[i] += t.B[i] * kSubpixelOne;
+        const float j = j0 + float(y - y0);
+        for (int k = lo; k < hi; ++k) {
+            unsigned mask = 0;
+            for (size_t s = 0; s < size_t(Samples); ++s)
+                if (k >= spans[s].begin && k < spans[s].end) mask |= 1u << s;
+            if (!mask) continue;
+            px.x = x0 + k;
+            px.y = y;
+            px.mask = mask;
+            const float i = i0 + float(k);
+            for (size_t s = 0; s < size_t(Samples); ++s)
+                px.z[s] = interpolate_depth(t, i + float(P::x[s] - 128) * (1.0f / 256.0f), j + float(P::y[s] - 128) * (1.0f / 256.0f));
+            on_pixel(px);
+        }
     }
 }
 

@@ -66,7 +66,7 @@ template <Wrap W>
 inline float reduce(float u) {
     if constexpr (W == Wrap::Repeat) {
         if (!(u >= -1.0e6f && u <= 1.0e6f)) return 0.0f;
-        return u - std::floor(u);
+        return u - float(floor_to_int(u));
     } else {
         return u != u ? 0.0f : (u < -1.0f ? -1.0f : (u > 2.0f ? 2.0f : u));
     }
