@@ -26,7 +26,7 @@ Run add_bench_command(CLI::App& app) {
     cmd->add_flag("--json", opt->json, "Print one JSON line instead of text");
     return [opt] {
         const Scene scene = load_scene(opt->scene);
-        const unsigned threads = opt->threads > 0 ? unsigned(opt->threads) : std::max(1u, std::thread::hardware_concurrency());
+        const unsigned threads = thread_count(opt->threads);
         const SceneRenderer renderer(scene, threads);
         Framebuffer fb(scene.width, scene.height, scene.samples);
         std::vector<double> ms;

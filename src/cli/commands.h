@@ -1,7 +1,9 @@
 // The subcommands of the softraster program. Each registers its options on the CLI11 app
 // and returns the function that runs it (which returns the process exit code).
 #pragma once
+#include <algorithm>
 #include <functional>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +14,11 @@ using Run = std::function<int()>;
 Run add_render_command(CLI::App& app);
 Run add_showcase_command(CLI::App& app);
 Run add_bench_command(CLI::App& app);
+
+// --threads: a count, or 0 for one thread per core.
+inline unsigned thread_count(int requested) {
+    return requested > 0 ? unsigned(requested) : std::max(1u, std::thread::hardware_concurrency());
+}
 
 // Exit codes: 0 success, 1 internal failure, 2 bad input (scene, mesh, image or flag).
 inline constexpr int kExitBadInput = 2;

@@ -16,7 +16,7 @@ Run add_showcase_command(CLI::App& app) {
         check_output_path(*out);
         const auto start = std::chrono::steady_clock::now();
         const Scene scene = showcase_scene();
-        const Image image = SceneRenderer(scene).render();
+        const Image image = SceneRenderer(scene, thread_count(0)).render();
         write_output(image, *out, std::chrono::steady_clock::now() - start);
         return 0;
     };

@@ -12,19 +12,20 @@ Image Framebuffer::read_pixels() const {
         std::copy(color_.begin(), color_.end(), img.pixels.begin());
         return img;
     }
-    const int n = samples_;
+    // 4x: average each channel of the four samples, floor(mean + 0.5) = (sum + 2) >> 2. The
+    // four RGBA8 samples are four 32-bit words; channels 0 and 2, and 1 and 3, are summed two
+    // at a time in 16-bit lanes (SIMD within a register).
+    const auto* words = reinterpret_cast<const uint32_t*>(color_.data());
+    auto* out = reinterpret_cast<uint32_t*>(img.pixels.data());
+    static_assert(sizeof(Rgba8) == 4);
     for (size_t p = 0; p < img.pixels.size(); ++p) {
-        const Rgba8* s = &color_[p * size_t(n)];
-        unsigned r = 0, g = 0, b = 0, a = 0;
-        for (int i = 0; i < n; ++i) {
-            r += s[i].r;
-            g += s[i].g;
-            b += s[i].b;
-            a += s[i].a;
+        const uint32_t* s = words + 4 * p;
+        uint32_t even = 0x00020002u, odd = 0x00020002u;  // + 2 for rounding
+        for (int i = 0; i < 4; ++i) {
+            even += s[i] & 0x00ff00ffu;
+            odd += (s[i] >> 8) & 0x00ff00ffu;
         }
-        const unsigned half = unsigned(n) / 2;
-        img.pixels[p] = {uint8_t((r + half) / unsigned(n)), uint8_t((g + half) / unsigned(n)),
-                         uint8_t((b + half) / unsigned(n)), uint8_t((a + half) / unsigned(n))};
+        out[p] = ((even >> 2) & 0x00ff00ffu) | (((odd >> 2) & 0x00ff00ffu) << 8);
     }
     return img;
 }

@@ -3,6 +3,8 @@
 // bilinear (GL_LINEAR, no mipmaps) filtering, repeat or clamp-to-edge wrapping.
 #pragma once
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -41,13 +43,13 @@ private:
 };
 
 namespace detail {
-// Texel index for coordinate t (in texels) along an axis of n texels. Repeat wraps
-// (GL_REPEAT); clamp stays on the edge texels (GL_CLAMP_TO_EDGE).
+// Texel index i along an axis of n texels. Repeat wraps (GL_REPEAT); clamp stays on the
+// edge texels (GL_CLAMP_TO_EDGE). Callers pass i in [-1, n] (coordinates are reduced
+// first), so repeat needs no division.
 template <Wrap W>
 inline int wrap_texel(int i, int n) {
     if constexpr (W == Wrap::Repeat) {
-        i %= n;
-        return i < 0 ? i + n : i;
+        return i < 0 ? i + n : (i >= n ? i - n : i);
     } else {
         return i < 0 ? 0 : (i >= n ? n - 1 : i);
     }

@@ -1,0 +1,91 @@
+// Microbenchmarks of single stages: triangle setup, traversal (rasterization), fragment
+// shading and the MSAA resolve.  build-release/bench/micro_benchmarks
+#include <benchmark/benchmark.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "softraster/context.h"
+#include "softraster/shading/surface_shader.h"
+
+using namespace softraster;
+
+namespace {
+
+constexpr int N = 9;  // a lit, textured, colored surface
+
+ShadedVertex<N> vertex(float x, float y) {
+    ClipVertex<N> c{glm::vec4((2 * x / 1920 - 1), (1 - 2 * y / 1080), 0.2f, 1.0f), {}};
+    for (int k = 0; k < N; ++k) c.var[size_t(k)] = float(k) * 0.1f + x * 0.001f;
+    ShadedVertex<N> v;
+    finish_vertex(c, Viewport{1920, 1080}, v);
+    return v;
+}
+
+void BM_TriangleSetup(benchmark::State& state) {
+    const ShadedVertex<N> a = vertex(100.3f, 100.7f), b = vertex(103.9f, 101.2f), c = vertex(101.1f, 104.6f);
+    TriangleSetup<N> t;
+    const Rect tile{64, 64, 128, 128};
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(setup_triangle(a, b, c, FrontFace::CCW, tile, t));
+        benchmark::ClobberMemory();
+    }
+}
+BENCHMARK(BM_TriangleSetup);
+
+// Covered samples of a triangle filling half of a 64x64 tile (or a small one).
+template <int Samples>
+void BM_Traversal(benchmark::State& state) {
+    const float size = float(state.range(0));
+    const ShadedVertex<N> a = vertex(64.2f, 64.4f), b = vertex(64.2f + size, 64.9f), c = vertex(64.6f, 64.1f + size);
+    TriangleSetup<N> t;
+    setup_triangle(a, b, c, FrontFace::CCW, Rect{64, 64, 128, 128}, t);
+    int64_t pixels = 0;
+    for (auto _ : state) {
+        rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) { pixels += px.mask; });
+        benchmark::DoNotOptimize(pixels);
+    }
+    state.SetItemsProcessed(state.iterations() * int64_t(size * size / 2));
+}
+BENCHMARK(BM_Traversal<1>)->Arg(2)->Arg(8)->Arg(63);
+BENCHMARK(BM_Traversal<4>)->Arg(2)->Arg(8)->Arg(63);
+
+template <Shading M>
+void BM_Shading(benchmark::State& state) {
+    SurfaceUniforms u;
+    u.lights.count = 2;
+    u.lights.to_light[0] = glm::normalize(glm::vec3(1, 1, 1));
+    u.lights.to_light[1] = glm::normalize(glm::vec3(-1, 0.5f, 1));
+    u.lights.color[0] = u.lights.color[1] = glm::vec3(0.7f);
+    const SurfaceShader<M, false, false> shader{&u};
+    typename SurfaceShader<M, false, false>::Varyings v{};
+    if constexpr (decltype(v)::kNormal) v.normal = glm::vec3(0.1f, 0.2f, 0.9f);
+    glm::vec4 color;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(shader.fragment(v, FragCoord{}, color));
+        benchmark::DoNotOptimize(color);
+    }
+}
+BENCHMARK(BM_Shading<Shading::Lambert>);
+BENCHMARK(BM_Shading<Shading::BlinnPhong>);
+
+void BM_TextureBilinear(benchmark::State& state) {
+    Image img(256, 256);
+    for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = Rgba8{uint8_t(i), uint8_t(i >> 3), uint8_t(i >> 6), 255};
+    const Texture tex(img);
+    float u = 0.1f;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(tex.sample<Filter::Bilinear, Wrap::Repeat>(glm::vec2(u, 0.3f)));
+        u += 0.001f;
+    }
+}
+BENCHMARK(BM_TextureBilinear);
+
+void BM_Resolve(benchmark::State& state) {
+    Framebuffer fb(1920, 1080, int(state.range(0)));
+    fb.clear_color(glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
+    for (auto _ : state) benchmark::DoNotOptimize(fb.read_pixels());
+    state.SetItemsProcessed(state.iterations() * 1920 * 1080);
+}
+BENCHMARK(BM_Resolve)->Arg(1)->Arg(4);
+
+}  // namespace
