@@ -124,6 +124,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         u.lights = lights;
         u.color = o.material.color;
         u.specular = o.material.specular;
+        u.has_specular = o.material.specular != glm::vec3(0.0f);
         u.shininess = o.material.shininess;
         u.texture = o.material.texture.get();
         u.filter = o.material.filter;

@@ -20,6 +20,7 @@ SurfaceUniforms uniforms() {
     u.lights.color[1] = glm::vec3(1.0f);
     u.color = glm::vec4(0.8f, 0.6f, 0.4f, 0.5f);
     u.specular = glm::vec3(0.3f);
+    u.has_specular = true;
     u.shininess = 10.0f;
     return u;
 }

@@ -39,6 +39,8 @@ struct CoveredPixel {
 struct Span {
     int begin, end;
 };
+// Rows at most this many pixels wide test each pixel instead (small triangles).
+inline constexpr int kNarrow = 16;
 inline Span edge_span(int64_t e, int64_t step, int n) {
     if (step == 0) return e >= 0 ? Span{0, n} : Span{0, 0};
     if (step > 0) {  // inside from some k on: k >= ceil(-e / step)
@@ -73,23 +75,35 @@ void rasterize_triangle(const TriangleSetup<N>& t, const Rect& rect, OnPixel&& o
     CoveredPixel<Samples> px;
     const float j0 = float(y0 - t.origin_y), i0 = float(x0 - t.origin_x);
     for (int y = y0; y < y1; ++y) {
-        std::array<Span, Samples> spans;
-        int lo = n, hi = 0;
-        for (size_t s = 0; s < size_t(Samples); ++s) {
-            Span sp{0, n};
-            for (size_t i = 0; i < 3; ++i) {
-                const Span e = edge_span(row[s][i], step_x[i], n);
-                sp = {std::max(sp.begin, e.begin), std::min(sp.end, e.end)};
+        std::array<Span, Samples> spans{};
+        std::array<std::array<int64_t, 3>, Samples> e = row;  // for narrow rows: stepped per pixel
+        int lo = 0, hi = n;
+        if (n > kNarrow) {  // wide: exact spans by division
+            lo = n, hi = 0;
+            for (size_t s = 0; s < size_t(Samples); ++s) {
+                Span sp{0, n};
+                for (size_t i = 0; i < 3; ++i) {
+                    const Span es = edge_span(row[s][i], step_x[i], n);
+                    sp = {std::max(sp.begin, es.begin), std::min(sp.end, es.end)};
+                }
+                spans[s] = sp;
+                if (sp.begin < sp.end) lo = std::min(lo, sp.begin), hi = std::max(hi, sp.end);
             }
-            spans[s] = sp;
-            if (sp.begin < sp.end) lo = std::min(lo, sp.begin), hi = std::max(hi, sp.end);
-            for (size_t i = 0; i < 3; ++i) row[s][i] += step_y[i];
         }
+        for (size_t s = 0; s < size_t(Samples); ++s)
+            for (size_t i = 0; i < 3; ++i) row[s][i] += step_y[i];
         const float j = j0 + float(y - y0);
         for (int k = lo; k < hi; ++k) {
             unsigned mask = 0;
-            for (size_t s = 0; s < size_t(Samples); ++s)
-                if (k >= spans[s].begin && k < spans[s].end) mask |= 1u << s;
+            if (n > kNarrow) {
+                for (size_t s = 0; s < size_t(Samples); ++s)
+                    if (k >= spans[s].begin && k < spans[s].end) mask |= 1u << s;
+            } else {  // narrow: a sign test per sample, cheaper than three 64-bit divisions
+                for (size_t s = 0; s < size_t(Samples); ++s) {
+                    if ((e[s][0] | e[s][1] | e[s][2]) >= 0) mask |= 1u << s;
+                    for (size_t i = 0; i < 3; ++i) e[s][i] += step_x[i];
+                }
+            }
             if (!mask) continue;
             px.x = x0 + k;
             px.y = y;

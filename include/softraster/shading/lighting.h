@@ -38,14 +38,17 @@ inline glm::vec3 diffuse_intensity(const LightSet& lights, const glm::vec3& n) {
     return intensity;
 }
 
+// N . normalize(v) without normalizing v: one square root and one division.
+inline float dot_normalized(const glm::vec3& n, const glm::vec3& v) { return glm::dot(n, v) / std::sqrt(glm::dot(v, v)); }
+
 inline glm::vec3 specular_term(const LightSet& lights, const glm::vec3& n, const glm::vec3& to_eye,
                                const glm::vec3& specular, float shininess) {
     glm::vec3 sum(0.0f);
     for (int i = 0; i < lights.count; ++i) {
         const glm::vec3 l = lights.to_light[size_t(i)];
         if (!(glm::dot(n, l) > 0.0f)) continue;
-        const glm::vec3 h = glm::normalize(l + to_eye);
-        sum += lights.color[size_t(i)] * specular * specular_power(std::max(0.0f, glm::dot(n, h)), shininess);
+        const float nh = dot_normalized(n, l + to_eye);  // N . H_i
+        sum += lights.color[size_t(i)] * specular * specular_power(std::max(0.0f, nh), shininess);
     }
     return sum;
 }

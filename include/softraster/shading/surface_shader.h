@@ -54,6 +54,7 @@ struct SurfaceUniforms {
     LightSet lights;
     glm::vec4 color{1.0f};
     glm::vec3 specular{0.0f};
+    bool has_specular = false;  // specular != 0: otherwise the term is skipped
     float shininess = 32.0f;
     const Texture* texture = nullptr;
     Filter filter = Filter::Bilinear;
@@ -94,7 +95,8 @@ struct SurfaceShader {
                 const glm::vec3 n = glm::normalize(in.normal);
                 glm::vec3 rgb = glm::vec3(base) * diffuse_intensity(u->lights, n);
                 if constexpr (Model == Shading::BlinnPhong)
-                    rgb += specular_term(u->lights, n, glm::normalize(u->eye - in.world), u->specular, u->shininess);
+                    if (u->has_specular)
+                        rgb += specular_term(u->lights, n, glm::normalize(u->eye - in.world), u->specular, u->shininess);
                 out = glm::vec4(rgb, base.a);
             }
         }
