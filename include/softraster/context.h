@@ -82,8 +82,11 @@ public:
     uint64_t fragments_shaded() const { return fragments_shaded_; }  // by the last execute()
 
 private:
+    std::pair<size_t, bool> hidden_surface_run(size_t first, int tile, const Rect& rect) const;
+
     Framebuffer* fb_;
     WorkerPool* pool_;
+    std::vector<uint32_t> owners_;  // per thread: the owner of each sample of its tile
     std::vector<std::unique_ptr<Command>> commands_;
     uint64_t fragments_shaded_ = 0;
 };

@@ -25,6 +25,22 @@ std::vector<std::pair<Command*, size_t>> work_items(const std::vector<std::uniqu
 
 }  // namespace
 
+std::pair<size_t, bool> Context::hidden_surface_run(size_t first, int tile, const Rect& rect) const {
+    // The longest run of commands from `first` that allow hidden-surface removal (at least
+    // the first command), and whether it is worth two passes: several draws and enough
+    // overdraw in this tile.
+    size_t end = first;
+    double area = 0;
+    while (end < commands_.size() && end - first < kMaxRunDraws && commands_[end]->allows_hidden_surface_removal() &&
+           commands_[end]->triangles_in_tile(tile) < kMaxTileTriangles) {
+        area += commands_[end]->covered_area(tile, rect);
+        ++end;
+    }
+    if (end == first) return {first + 1, false};
+    const double tile_area = double(rect.x1 - rect.x0) * double(rect.y1 - rect.y0);
+    return {end, end - first >= 2 && area >= kOverdrawForHiddenSurfaceRemoval * tile_area};
+}
+
 void Context::execute() {
     Target t;
     t.fb = fb_;
@@ -39,10 +55,23 @@ void Context::execute() {
     for_each_item(pool_, bin_items.size(), [&](size_t i, unsigned) { bin_items[i].first->bin_primitive_chunk(bin_items[i].second, t); });
 
     // One thread per tile at a time, every command in order: no locks on the framebuffer.
-    std::vector<uint64_t> shaded(pool_ ? pool_->size() : 1, 0);
+    const unsigned threads = pool_ ? pool_->size() : 1;
+    std::vector<uint64_t> shaded(threads, 0);
+    owners_.resize(size_t(threads) * kTileSize * kTileSize * size_t(fb_->samples()));
     for_each_item(pool_, size_t(t.grid.count()), [&](size_t tile, unsigned thread) {
         const Rect rect = t.grid.tile_rect(int(tile));
-        for (auto& c : commands_) shaded[thread] += c->draw_tile(int(tile), rect, t);
+        uint32_t* owners = owners_.data() + size_t(thread) * kTileSize * kTileSize * size_t(fb_->samples());
+        for (size_t c = 0; c < commands_.size();) {
+            const auto [end, worth_it] = hidden_surface_run(c, int(tile), rect);
+            if (!worth_it) {
+                for (; c < end; ++c) shaded[thread] += commands_[c]->draw_tile(int(tile), rect, t);
+                continue;
+            }
+            std::fill_n(owners, size_t(kTileSize) * kTileSize * size_t(fb_->samples()), kNoOwner);
+            for (size_t k = c; k < end; ++k) commands_[k]->visibility_pass(int(tile), rect, t, uint32_t(k - c), owners);
+            for (size_t k = c; k < end; ++k) shaded[thread] += commands_[k]->shading_pass(int(tile), rect, t, uint32_t(k - c), owners);
+            c = end;
+        }
     });
     fragments_shaded_ = 0;
     for (uint64_t s : shaded) fragments_shaded_ += s;

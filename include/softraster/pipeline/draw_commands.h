@@ -14,6 +14,7 @@
 #include "softraster/framebuffer.h"
 #include "softraster/pipeline/binning.h"
 #include "softraster/pipeline/fragment_shading.h"
+#include "softraster/pipeline/hidden_surface_removal.h"
 #include "softraster/pipeline/line_rasterization.h"
 
 namespace softraster {
@@ -37,6 +38,15 @@ public:
     virtual void bin_primitive_chunk(size_t, const Target&) {}
     // Draws this command's part of one tile; returns the fragments shaded.
     virtual uint64_t draw_tile(int tile, const Rect& rect, const Target&) = 0;
+
+    // Hidden-surface removal (hidden_surface_removal.h), for commands that allow it.
+    virtual bool allows_hidden_surface_removal() const { return false; }
+    // Pixels of the tile this command's triangles cover, summed (each triangle's area, at
+    // most its bounding box within the tile): an estimate of the overdraw.
+    virtual double covered_area(int, const Rect&) const { return 0; }
+    virtual size_t triangles_in_tile(int) const { return 0; }
+    virtual void visibility_pass(int, const Rect&, const Target&, uint32_t /*draw*/, uint32_t* /*owners*/) {}
+    virtual uint64_t shading_pass(int, const Rect&, const Target&, uint32_t /*draw*/, const uint32_t* /*owners*/) { return 0; }
 };
 
 class ClearCommand final : public Command {
@@ -88,20 +98,89 @@ public:
 
     uint64_t draw_tile(int tile, const Rect& rect, const Target& t) override {
         uint64_t shaded = 0;
-        TriangleSetup<N> setup;
-        for (const TriangleBin<N>& bin : bins_) {
+        for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+            shaded += draw_triangle<Samples, B>(shader_, state_, *t.fb, setup);
+        });
+        return shaded;
+    }
+
+    bool allows_hidden_surface_removal() const override {
+        return PureShader<S> && B == BlendMode::Opaque && softraster::allows_hidden_surface_removal(state_);
+    }
+    size_t triangles_in_tile(int tile) const override {
+        size_t n = 0;
+        for (const TriangleBin<N>& bin : bins_) n += bin.tile_begin[size_t(tile) + 1] - bin.tile_begin[size_t(tile)];
+        return n;
+    }
+    double covered_area(int tile, const Rect& rect) const override {
+        double area = 0;
+        for (const TriangleBin<N>& bin : bins_)
             for (uint32_t k = bin.tile_begin[size_t(tile)]; k < bin.tile_begin[size_t(tile) + 1]; ++k) {
                 const TriangleRef& r = bin.refs[k];
-                if (!setup_triangle(bin.vertex(r.v[0], post_.data()), bin.vertex(r.v[1], post_.data()),
-                                    bin.vertex(r.v[2], post_.data()), state_.front_face, rect, setup))
-                    continue;
-                shaded += draw_triangle<Samples, B>(shader_, state_, *t.fb, setup);
+                const ShadedVertex<N>&a = bin.vertex(r.v[0], post_.data()), &b = bin.vertex(r.v[1], post_.data()),
+                                      &c = bin.vertex(r.v[2], post_.data());
+                const Rect box = pixel_bounds(a, b, c);
+                const double in_tile = double(std::max(0, std::min(box.x1, rect.x1) - std::max(box.x0, rect.x0))) *
+                                       double(std::max(0, std::min(box.y1, rect.y1) - std::max(box.y0, rect.y0)));
+                const double triangle = std::fabs(double(signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y))) / (2.0 * 65536.0);
+                area += std::min(in_tile, triangle);
             }
-        }
+        return area;
+    }
+    void visibility_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) override {
+        Framebuffer& fb = *t.fb;
+        for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
+            rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
+                float* depth = fb.depth_data() + fb.sample_index(px.x, px.y);
+                uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
+                for (int s = 0; s < Samples; ++s)
+                    if ((px.mask & (1u << s)) && depth_passes(state_.depth_func, px.z[size_t(s)], depth[s])) {
+                        depth[s] = px.z[size_t(s)];
+                        owner[s] = owner_id(draw, id);
+                    }
+            });
+        });
+    }
+    uint64_t shading_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) override {
+        using V = typename S::Varyings;
+        Framebuffer& fb = *t.fb;
+        uint64_t shaded = 0;
+        for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
+            rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
+                const uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
+                unsigned mine = 0;
+                for (int s = 0; s < Samples; ++s)
+                    if ((px.mask & (1u << s)) && owner[s] == owner_id(draw, id)) mine |= 1u << s;
+                if (!mine) return;
+                const float i = float(px.x - setup.origin_x), j = float(px.y - setup.origin_y);
+                const V v = from_array<V>(interpolate_perspective(setup, i, j));
+                glm::vec4 color;
+                shader_.fragment(v, FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
+                ++shaded;
+                const Rgba8 c = quantize_rgba8(color);
+                Rgba8* dst = fb.color_data() + fb.sample_index(px.x, px.y);
+                for (int s = 0; s < Samples; ++s)
+                    if (mine & (1u << s)) dst[s] = c;
+            });
+        });
         return shaded;
     }
 
 private:
+    // Calls f(setup, ordinal) for each of the tile's triangles in draw order; the ordinal
+    // counts the tile's triangles of this draw (the owner id of hidden-surface removal).
+    template <class F>
+    void for_each_setup(int tile, const Rect& rect, F&& f) const {
+        TriangleSetup<N> setup;
+        uint32_t ordinal = 0;
+        for (const TriangleBin<N>& bin : bins_)
+            for (uint32_t k = bin.tile_begin[size_t(tile)]; k < bin.tile_begin[size_t(tile) + 1]; ++k, ++ordinal) {
+                const TriangleRef& r = bin.refs[k];
+                if (setup_triangle(bin.vertex(r.v[0], post_.data()), bin.vertex(r.v[1], post_.data()),
+                                   bin.vertex(r.v[2], post_.data()), state_.front_face, rect, setup))
+                    f(setup, ordinal);
+            }
+    }
     S shader_;
     RenderState state_;
     std::span<const Vertex> vertices_;

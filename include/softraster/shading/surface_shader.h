@@ -67,6 +67,7 @@ template <Shading Model, bool Textured, bool Colored = true>
 struct SurfaceShader {
     using Vertex = MeshVertex;
     using Varyings = SurfaceVaryings<Model, Textured, Colored>;
+    static constexpr bool kPure = true;  // never discards, no side effects
     const SurfaceUniforms* u;
 
     glm::vec4 vertex(const MeshVertex& in, Varyings& out) const {
