@@ -32,6 +32,17 @@ TEST(Determinism, SamePictureAt1To8Threads) {
     }
 }
 
+TEST(Determinism, SamePictureOnTheGenericAndTheAvx2Path) {
+    for (const auto& f : scenes()) {
+        const Scene scene = load_scene(f);
+        simd::use_generic_path(true);
+        const Image generic = SceneRenderer(scene, 2).render();
+        simd::use_generic_path(false);
+        const Image fast = SceneRenderer(scene, 2).render();
+        EXPECT_TRUE(generic.pixels == fast.pixels) << f.filename();
+    }
+}
+
 TEST(Determinism, ReplayingAFrameGivesTheSamePicture) {
     const Scene scene = showcase_scene();
     const SceneRenderer renderer(scene, 2);

@@ -97,11 +97,8 @@ public:
     }
 
     uint64_t draw_tile(int tile, const Rect& rect, const Target& t) override {
-        uint64_t shaded = 0;
-        for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
-            shaded += draw_triangle<Samples, B>(shader_, state_, *t.fb, setup);
-        });
-        return shaded;
+        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) return draw_tile_avx2(tile, rect, t);
+        return draw_tile_generic(tile, rect, t);
     }
 
     bool allows_hidden_surface_removal() const override {
@@ -167,6 +164,31 @@ public:
     }
 
 private:
+    // The same code twice: once for any x86-64, once with AVX2 allowed, where eight-lane
+    // vectors are one register. Everything it calls is inlined into each (flatten).
+    SOFTRASTER_AVX2_TARGET uint64_t draw_tile_avx2(int tile, const Rect& rect, const Target& t) {
+        return draw_tile_body</*wide_lanes=*/true>(tile, rect, t);
+    }
+    [[gnu::flatten]] uint64_t draw_tile_generic(int tile, const Rect& rect, const Target& t) {
+        return draw_tile_body</*wide_lanes=*/false>(tile, rect, t);
+    }
+    // Eight pixels at a time where the shader can (single-sampled); without wide vector
+    // registers only for triangles wide enough to fill the lanes.
+    template <bool WideLanes>
+    uint64_t draw_tile_body(int tile, const Rect& rect, const Target& t) {
+        uint64_t shaded = 0;
+        for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+            if constexpr (Samples == 1 && BatchShader<S>) {
+                if (WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {
+                    shaded += draw_triangle_batched<B>(shader_, state_, *t.fb, setup);
+                    return;
+                }
+            }
+            shaded += draw_triangle<Samples, B>(shader_, state_, *t.fb, setup);
+        });
+        return shaded;
+    }
+
     // Calls f(setup, ordinal) for each of the tile's triangles in draw order; the ordinal
     // counts the tile's triangles of this draw (the owner id of hidden-surface removal).
     template <class F>

@@ -45,4 +45,52 @@ uint64_t draw_triangle(const S& shader, const RenderState& st, Framebuffer& fb,
     return shaded;
 }
 
+// ---- eight pixels at once
+//
+// A shader can also offer fragment_batch(varyings, z, front_facing, color): the same
+// formulas on eight pixels of a row, one simd::f8 per varying and per color channel. For
+// single-sampled targets the triangle is then walked in row spans, eight pixels at a time:
+// depth, 1/w and every varying are evaluated from their planes for eight pixels at once,
+// tested, shaded and blended as vectors.
+template <class S>
+concept BatchShader = Shader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v,
+                                           simd::f8 z, std::array<simd::f8, 4>& color) {
+    s.fragment_batch(v, z, true, color);
+};
+
+template <BlendMode B, BatchShader S>
+uint64_t draw_triangle_batched(const S& shader, const RenderState& st, Framebuffer& fb,
+                               const TriangleSetup<kVaryingCount<typename S::Varyings>>& t) {
+    using namespace simd;
+    constexpr int N = kVaryingCount<typename S::Varyings>;
+    uint64_t shaded = 0;
+    rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
+        const f8 j = splat(float(y - t.origin_y));
+        float* depth = fb.depth_data() + fb.sample_index(0, y);
+        Rgba8* color = fb.color_data() + fb.sample_index(0, y);
+        for (int x = x_begin; x < x_end; x += kLanes) {
+            const int count = std::min(kLanes, x_end - x);
+            const f8 i = to_float(kLaneIndex) + float(x - t.origin_x);
+            const f8 z = t.z.a0 + t.z.dadx * i + t.z.dady * j;
+            f8 stored = splat(0.0f);
+            std::memcpy(&stored, depth + x, size_t(count) * 4);
+            i8 pass = kLaneIndex < count;
+            if (st.depth_test) pass &= depth_passes(st.depth_func, z, stored);
+            if (!any(pass)) continue;
+            const f8 w = 1.0f / (t.inv_w.a0 + t.inv_w.dadx * i + t.inv_w.dady * j);
+            std::array<f8, N> var;
+            for (size_t k = 0; k < size_t(N); ++k) var[k] = (t.var_w[k].a0 + t.var_w[k].dadx * i + t.var_w[k].dady * j) * w;
+            std::array<f8, 4> rgba;
+            shader.fragment_batch(var, z, t.front_facing, rgba);
+            shaded += unsigned(__builtin_popcount(bits(pass)));
+            if (st.depth_test && st.depth_write) {
+                stored = select(pass, z, stored);
+                std::memcpy(depth + x, &stored, size_t(count) * 4);
+            }
+            if (st.color_write) blend_row<B>(color + x, count, pass, rgba);
+        }
+    });
+    return shaded;
+}
+
 }  // namespace softraster

@@ -11,7 +11,11 @@
 #include <glm/common.hpp>
 #include <glm/vec4.hpp>
 
+#include <array>
+#include <cstring>
+
 #include "softraster/framebuffer.h"
+#include "softraster/pipeline/simd.h"
 #include "softraster/render_state.h"
 
 namespace softraster {
@@ -73,6 +77,61 @@ inline void merge_fragment(const RenderState& st, Rgba8* color, float* depth, un
         if (st.depth_test && st.depth_write) depth[s] = z[s];
         if (st.color_write) color[s] = blend<B>(src, color[s]);
     }
+}
+
+// ---- eight pixels of a row at once (see fragment_shading.h)
+
+inline simd::i8 depth_passes(DepthFunc f, simd::f8 z, simd::f8 stored) {
+    switch (f) {
+        case DepthFunc::Never: return simd::splat_i(0);
+        case DepthFunc::Less: return z < stored;
+        case DepthFunc::Equal: return z == stored;
+        case DepthFunc::LessEqual: return z <= stored;
+        case DepthFunc::Greater: return z > stored;
+        case DepthFunc::NotEqual: return z != stored;
+        case DepthFunc::GreaterEqual: return z >= stored;
+        case DepthFunc::Always: return simd::splat_i(-1);
+    }
+    return simd::splat_i(0);
+}
+
+inline simd::i8 mul_unorm8(simd::i8 x, simd::i8 y) {
+    const simd::i8 t = x * y + 128;
+    return (t + (t >> 8)) >> 8;
+}
+
+// Blends colors c (r, g, b, a lanes) into `count` RGBA8 pixels at dst, where `write` is set:
+// the same arithmetic as blend<B> above, lane by lane.
+template <BlendMode B>
+inline void blend_row(Rgba8* dst, int count, simd::i8 write, const std::array<simd::f8, 4>& c) {
+    using simd::i8;
+    i8 old{};
+    std::memcpy(&old, dst, size_t(count) * 4);
+    const i8 sr = simd::quantize_unorm8(c[0]), sg = simd::quantize_unorm8(c[1]), sb = simd::quantize_unorm8(c[2]),
+             sa = simd::quantize_unorm8(c[3]);
+    i8 r = sr, g = sg, b = sb, a = sa;
+    if constexpr (B != BlendMode::Opaque) {
+        const i8 dr = old & 255, dg = (old >> 8) & 255, db = (old >> 16) & 255, da = (old >> 24) & 255;
+        const i8 max = simd::splat_i(255);
+        if constexpr (B == BlendMode::Alpha) {
+            const i8 inv = 255 - sa;
+            r = mul_unorm8(sr, sa) + mul_unorm8(dr, inv);
+            g = mul_unorm8(sg, sa) + mul_unorm8(dg, inv);
+            b = mul_unorm8(sb, sa) + mul_unorm8(db, inv);
+            a = sa + mul_unorm8(da, inv);
+        } else {
+            r = mul_unorm8(sr, sa) + dr;
+            g = mul_unorm8(sg, sa) + dg;
+            b = mul_unorm8(sb, sa) + db;
+            a = da;
+        }
+        r = r > max ? max : r;
+        g = g > max ? max : g;
+        b = b > max ? max : b;
+        a = a > max ? max : a;
+    }
+    const i8 packed = simd::select(write, r | (g << 8) | (b << 16) | (a << 24), old);
+    std::memcpy(static_cast<void*>(dst), &packed, size_t(count) * 4);
 }
 
 }  // namespace softraster

@@ -116,4 +116,40 @@ void rasterize_triangle(const TriangleSetup<N>& t, const Rect& rect, OnPixel&& o
     }
 }
 
+// Single-sampled: calls on_span(y, x_begin, x_end) for each row's run of covered pixels
+// (a triangle is convex, so a row's covered pixels are contiguous).
+template <int N, class OnSpan>
+void rasterize_spans(const TriangleSetup<N>& t, const Rect& rect, OnSpan&& on_span) {
+    const int x0 = std::max(rect.x0, t.bounds.x0), x1 = std::min(rect.x1, t.bounds.x1);
+    const int y0 = std::max(rect.y0, t.bounds.y0), y1 = std::min(rect.y1, t.bounds.y1);
+    if (x0 >= x1 || y0 >= y1) return;
+    const int n = x1 - x0;
+    std::array<int64_t, 3> row;  // E + bias at the center of pixel (x0, y)
+    for (size_t i = 0; i < 3; ++i)
+        row[i] = t.edge(int(i), int64_t(x0) * kSubpixelOne + 128, int64_t(y0) * kSubpixelOne + 128) + t.bias[i];
+    const std::array<int64_t, 3> step_x = {t.A[0] * kSubpixelOne, t.A[1] * kSubpixelOne, t.A[2] * kSubpixelOne};
+    for (int y = y0; y < y1; ++y) {
+        int lo = 0, hi = n;
+        if (n > kNarrow) {
+            for (size_t i = 0; i < 3; ++i) {
+                const Span e = edge_span(row[i], step_x[i], n);
+                lo = std::max(lo, e.begin);
+                hi = std::min(hi, e.end);
+            }
+        } else {  // narrow: walk to the first covered pixel, then to the first uncovered one
+            std::array<int64_t, 3> e = row;
+            auto inside = [&] { return (e[0] | e[1] | e[2]) >= 0; };
+            auto step = [&] {
+                for (size_t i = 0; i < 3; ++i) e[i] += step_x[i];
+            };
+            lo = 0;
+            while (lo < n && !inside()) ++lo, step();
+            hi = lo;
+            while (hi < n && inside()) ++hi, step();
+        }
+        if (lo < hi) on_span(y, x0 + lo, x0 + hi);
+        for (size_t i = 0; i < 3; ++i) row[i] += t.B[i] * kSubpixelOne;
+    }
+}
+
 }  // namespace softraster

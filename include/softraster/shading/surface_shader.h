@@ -4,6 +4,7 @@
 // texture is sampled are template arguments, so each combination's fragment code is compiled
 // on its own with no per-pixel branch on the shading model.
 #pragma once
+#include <array>
 #include <cmath>
 #include <type_traits>
 
@@ -43,6 +44,14 @@ struct SurfaceVaryings {
     [[no_unique_address]] MaybeVarying<kUv, glm::vec2, 3> uv;
     [[no_unique_address]] MaybeVarying<kColor, glm::vec4, 4> color;          // vertex color
     [[no_unique_address]] MaybeVarying<!kAny, float, 5> unused;              // a struct has at least one float
+
+    // Where each present varying starts among the struct's floats (empty ones take none).
+    static constexpr int kWorldAt = 0;
+    static constexpr int kNormalAt = kWorldAt + 3 * kWorld;
+    static constexpr int kIntensityAt = kNormalAt + 3 * kNormal;
+    static constexpr int kUvAt = kIntensityAt + 3 * kIntensity;
+    static constexpr int kColorAt = kUvAt + 2 * kUv;
+    static constexpr int kFloats = kAny ? kColorAt + 4 * kColor : 1;
 };
 
 // Everything a draw's shader reads that is the same for all its vertices and fragments.
@@ -102,6 +111,52 @@ struct SurfaceShader {
             }
         }
         return true;
+    }
+
+    // The same formulas for eight fragments of a row (fragment_shading.h).
+    void fragment_batch(const std::array<simd::f8, kVaryingCount<Varyings>>& in, simd::f8 z, bool,
+                        std::array<simd::f8, 4>& out) const {
+        using namespace simd;
+        static_assert(kVaryingCount<Varyings> == Varyings::kFloats, "varying layout");
+        auto vec3_at = [&](int k) { return vec3x8{in[size_t(k)], in[size_t(k) + 1], in[size_t(k) + 2]}; };
+        if constexpr (Model == Shading::Depth) {
+            out = {z, z, z, splat(1.0f)};
+        } else if constexpr (Model == Shading::Normals) {
+            const vec3x8 n = normalize(vec3_at(Varyings::kNormalAt));
+            out = {0.5f * n.x + 0.5f, 0.5f * n.y + 0.5f, 0.5f * n.z + 0.5f, splat(1.0f)};
+        } else {
+            std::array<f8, 4> base = {splat(u->color.r), splat(u->color.g), splat(u->color.b), splat(u->color.a)};
+            if constexpr (Varyings::kColor)
+                for (size_t c = 0; c < 4; ++c) base[c] *= in[size_t(Varyings::kColorAt) + c];
+            if constexpr (Varyings::kUv) {
+                std::array<f8, 4> tex;
+                for (int l = 0; l < kLanes; ++l) {
+                    const glm::vec4 t = u->texture->sample(glm::vec2(in[Varyings::kUvAt][l], in[Varyings::kUvAt + 1][l]), u->filter, u->wrap);
+                    for (int c = 0; c < 4; ++c) tex[size_t(c)][l] = t[c];
+                }
+                for (size_t c = 0; c < 4; ++c) base[c] *= tex[c];
+            }
+            if constexpr (Model == Shading::Unlit) {
+                out = base;
+            } else if constexpr (Model == Shading::Gouraud) {
+                const vec3x8 i = vec3_at(Varyings::kIntensityAt);
+                out = {base[0] * i.x, base[1] * i.y, base[2] * i.z, base[3]};
+            } else {  // Lambert, Flat, BlinnPhong
+                const vec3x8 n = normalize(vec3_at(Varyings::kNormalAt));
+                const vec3x8 d = diffuse_intensity(u->lights, n);
+                out = {base[0] * d.x, base[1] * d.y, base[2] * d.z, base[3]};
+                if constexpr (Model == Shading::BlinnPhong) {
+                    if (u->has_specular) {
+                        const vec3x8 p = vec3_at(Varyings::kWorldAt);
+                        const vec3x8 v = normalize({u->eye.x - p.x, u->eye.y - p.y, u->eye.z - p.z});
+                        const vec3x8 s = specular_term(u->lights, n, v, u->specular, u->shininess);
+                        out[0] += s.x;
+                        out[1] += s.y;
+                        out[2] += s.z;
+                    }
+                }
+            }
+        }
     }
 };
 
