@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "scene/record_surface_draw.h"
 #include "softraster/context.h"
 
 namespace softraster {
@@ -64,26 +65,6 @@ LightSet light_set(const Lights& lights) {
     return set;
 }
 
-// The shader specialized for the model, the texture and the vertex colors: what it does
-// not need is neither computed nor interpolated.
-template <Shading M>
-void draw_model(Context& ctx, const SceneRenderer::Draw& d) {
-    const std::span<const MeshVertex> vertices(d.mesh->vertices);
-    const std::span<const uint32_t> indices(d.mesh->indices);
-    auto draw = [&]<bool Textured, bool Colored>() {
-        ctx.draw(Topology::Triangles, SurfaceShader<M, Textured, Colored>{&d.uniforms}, vertices, indices);
-    };
-    if constexpr (M == Shading::Normals || M == Shading::Depth) {
-        draw.template operator()<false, false>();
-    } else {
-        const bool textured = d.uniforms.texture != nullptr;
-        if (textured && d.colored) draw.template operator()<true, true>();
-        else if (textured) draw.template operator()<true, false>();
-        else if (d.colored) draw.template operator()<false, true>();
-        else draw.template operator()<false, false>();
-    }
-}
-
 bool has_vertex_colors(const Mesh& mesh) {
     return std::any_of(mesh.vertices.begin(), mesh.vertices.end(), [](const MeshVertex& v) { return v.color != glm::vec4(1.0f); });
 }
@@ -91,13 +72,13 @@ bool has_vertex_colors(const Mesh& mesh) {
 void draw_object(Context& ctx, const SceneRenderer::Draw& d) {
     ctx.state = d.state;
     switch (d.shading) {
-        case Shading::Unlit: draw_model<Shading::Unlit>(ctx, d); break;
-        case Shading::Flat: draw_model<Shading::Flat>(ctx, d); break;
-        case Shading::Gouraud: draw_model<Shading::Gouraud>(ctx, d); break;
-        case Shading::Lambert: draw_model<Shading::Lambert>(ctx, d); break;
-        case Shading::BlinnPhong: draw_model<Shading::BlinnPhong>(ctx, d); break;
-        case Shading::Normals: draw_model<Shading::Normals>(ctx, d); break;
-        case Shading::Depth: draw_model<Shading::Depth>(ctx, d); break;
+        case Shading::Unlit: record_surface_draw<Shading::Unlit>(ctx, d); break;
+        case Shading::Flat: record_surface_draw<Shading::Flat>(ctx, d); break;
+        case Shading::Gouraud: record_surface_draw<Shading::Gouraud>(ctx, d); break;
+        case Shading::Lambert: record_surface_draw<Shading::Lambert>(ctx, d); break;
+        case Shading::BlinnPhong: record_surface_draw<Shading::BlinnPhong>(ctx, d); break;
+        case Shading::Normals: record_surface_draw<Shading::Normals>(ctx, d); break;
+        case Shading::Depth: record_surface_draw<Shading::Depth>(ctx, d); break;
     }
 }
 

@@ -125,29 +125,104 @@ public:
         return area;
     }
     void visibility_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) override {
+        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) visibility_avx2(tile, rect, t, draw, owners);
+        else visibility_generic(tile, rect, t, draw, owners);
+    }
+    uint64_t shading_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) override {
+        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) return shading_avx2(tile, rect, t, draw, owners);
+        return shading_generic(tile, rect, t, draw, owners);
+    }
+
+private:
+    SOFTRASTER_AVX2_TARGET void visibility_avx2(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) {
+        visibility_body(tile, rect, t, draw, owners);
+    }
+    SOFTRASTER_FLATTEN void visibility_generic(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) {
+        visibility_body(tile, rect, t, draw, owners);
+    }
+    SOFTRASTER_AVX2_TARGET uint64_t shading_avx2(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) {
+        return shading_body(tile, rect, t, draw, owners);
+    }
+    SOFTRASTER_FLATTEN uint64_t shading_generic(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) {
+        return shading_body(tile, rect, t, draw, owners);
+    }
+
+    // Pass 1: depth test and write, and the owner of every sample that passes.
+    void visibility_body(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) {
         Framebuffer& fb = *t.fb;
         for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
+            const uint32_t me = owner_id(draw, id);
+            if constexpr (Samples == 1) {  // eight pixels at a time
+                using namespace simd;
+                rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
+                    float* depth = fb.depth_data() + fb.sample_index(0, y);
+                    uint32_t* owner = owners + size_t(y - rect.y0) * kTileSize;  // indexed by x - rect.x0
+                    const f8 j = splat(float(y - setup.origin_y));
+                    for (int x = x_begin; x < x_end; x += kLanes) {
+                        const int count = std::min(kLanes, x_end - x);
+                        const f8 z = setup.z.a0 + setup.z.dadx * (to_float(kLaneIndex) + float(x - setup.origin_x)) + setup.z.dady * j;
+                        f8 stored = splat(0.0f);
+                        std::memcpy(&stored, depth + x, size_t(count) * 4);
+                        const i8 pass = (kLaneIndex < count) & depth_passes(state_.depth_func, z, stored);
+                        stored = select(pass, z, stored);
+                        std::memcpy(depth + x, &stored, size_t(count) * 4);
+                        i8 o{};
+                        std::memcpy(&o, owner + (x - rect.x0), size_t(count) * 4);
+                        o = select(pass, splat_i(int32_t(me)), o);
+                        std::memcpy(owner + (x - rect.x0), &o, size_t(count) * 4);
+                    }
+                });
+                return;
+            }
             rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
                 float* depth = fb.depth_data() + fb.sample_index(px.x, px.y);
                 uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
                 for (int s = 0; s < Samples; ++s)
                     if ((px.mask & (1u << s)) && depth_passes(state_.depth_func, px.z[size_t(s)], depth[s])) {
                         depth[s] = px.z[size_t(s)];
-                        owner[s] = owner_id(draw, id);
+                        owner[s] = me;
                     }
             });
         });
     }
-    uint64_t shading_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) override {
+
+    // Pass 2: shade each pixel for the triangle that owns some of its samples.
+    uint64_t shading_body(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) {
         using V = typename S::Varyings;
         Framebuffer& fb = *t.fb;
         uint64_t shaded = 0;
         for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
+            const uint32_t me = owner_id(draw, id);
+            if constexpr (Samples == 1 && BatchShader<S>) {  // eight pixels at a time
+                using namespace simd;
+                rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
+                    const uint32_t* owner = owners + size_t(y - rect.y0) * kTileSize;  // indexed by x - rect.x0
+                    Rgba8* color = fb.color_data() + fb.sample_index(0, y);
+                    const f8 j = splat(float(y - setup.origin_y));
+                    for (int x = x_begin; x < x_end; x += kLanes) {
+                        const int count = std::min(kLanes, x_end - x);
+                        i8 o{};
+                        std::memcpy(&o, owner + (x - rect.x0), size_t(count) * 4);
+                        const i8 mine = (kLaneIndex < count) & (o == int32_t(me));
+                        if (!any(mine)) continue;
+                        const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
+                        const f8 w = 1.0f / (setup.inv_w.a0 + setup.inv_w.dadx * i + setup.inv_w.dady * j);
+                        std::array<f8, N> var;
+                        for (size_t k = 0; k < size_t(N); ++k)
+                            var[k] = (setup.var_w[k].a0 + setup.var_w[k].dadx * i + setup.var_w[k].dady * j) * w;
+                        std::array<f8, 4> rgba;
+                        shader_.fragment_batch(var, setup.z.a0 + setup.z.dadx * i + setup.z.dady * j, setup.front_facing, rgba);
+                        shaded += unsigned(__builtin_popcount(bits(mine)));
+                        blend_row<BlendMode::Opaque>(color + x, count, mine, rgba);
+                    }
+                });
+                return;
+            }
             rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
                 const uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
                 unsigned mine = 0;
                 for (int s = 0; s < Samples; ++s)
-                    if ((px.mask & (1u << s)) && owner[s] == owner_id(draw, id)) mine |= 1u << s;
+                    if ((px.mask & (1u << s)) && owner[s] == me) mine |= 1u << s;
                 if (!mine) return;
                 const float i = float(px.x - setup.origin_x), j = float(px.y - setup.origin_y);
                 const V v = from_array<V>(interpolate_perspective(setup, i, j));
@@ -163,13 +238,12 @@ public:
         return shaded;
     }
 
-private:
     // The same code twice: once for any x86-64, once with AVX2 allowed, where eight-lane
     // vectors are one register. Everything it calls is inlined into each (flatten).
     SOFTRASTER_AVX2_TARGET uint64_t draw_tile_avx2(int tile, const Rect& rect, const Target& t) {
         return draw_tile_body</*wide_lanes=*/true>(tile, rect, t);
     }
-    [[gnu::flatten]] uint64_t draw_tile_generic(int tile, const Rect& rect, const Target& t) {
+    SOFTRASTER_FLATTEN uint64_t draw_tile_generic(int tile, const Rect& rect, const Target& t) {
         return draw_tile_body</*wide_lanes=*/false>(tile, rect, t);
     }
     // Eight pixels at a time where the shader can (single-sampled); without wide vector

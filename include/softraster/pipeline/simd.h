@@ -32,11 +32,18 @@ inline bool cpu_has_avx2() {
 #endif
 }
 
+// flatten: everything the tile loop calls is inlined into it, so the AVX2 copy really is
+// AVX2 code throughout (off in sanitizer builds, which it makes very slow to compile).
+#ifdef SOFTRASTER_NO_FLATTEN
+#define SOFTRASTER_FLATTEN
+#else
+#define SOFTRASTER_FLATTEN [[gnu::flatten]]
+#endif
 #if defined(__x86_64__) || defined(__i386__)
-#define SOFTRASTER_AVX2_TARGET [[gnu::target("avx2,fma"), gnu::flatten]]
+#define SOFTRASTER_AVX2_TARGET [[gnu::target("avx2,fma")]] SOFTRASTER_FLATTEN
 #define SOFTRASTER_HAS_AVX2_PATH 1
 #else
-#define SOFTRASTER_AVX2_TARGET [[gnu::flatten]]
+#define SOFTRASTER_AVX2_TARGET SOFTRASTER_FLATTEN
 #define SOFTRASTER_HAS_AVX2_PATH 0
 #endif
 using f8 = float __attribute__((vector_size(32)));
