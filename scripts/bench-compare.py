@@ -108,6 +108,22 @@ TAIL = """
 
 Microbenchmarks (Google Benchmark) of setup, traversal, shading and resolve:
 `build-release/bench/micro_benchmarks` (built when libbenchmark-dev is installed).
+
+## Where the rest of the gap is
+
+softraster is faster than llvmpipe on every scene at both thread counts; the target (half of
+llvmpipe's time) is not yet met everywhere. What the profiles point at next:
+
+- Triangle-heavy scenes (bench_highpoly*, bench_many_objects, bench_msaa at 1 thread): per
+  triangle work dominates — setup computes double-precision planes for every varying, and
+  every small triangle runs the span walk. Next: set up in SIMD across triangles, and a
+  small-triangle path that skips planes for triangles that cover one or two pixels.
+- bench_msaa: the 4x path shades scalar; the eight-lane path is single-sampled only.
+- bench_fill: hidden-surface removal cut shading 16x; the visibility pass re-walks every
+  layer. A coarse per-tile depth bound (reject a triangle whose nearest depth is behind the
+  tile's farthest stored depth) would skip most of it.
+- bench_blend: eight-lane shading and 8-bit blending; llvmpipe's JIT fuses the whole
+  fragment pipeline per quad. Next: keep color in the tile in a planar layout across draws.
 """
 
 if __name__ == '__main__':
