@@ -20,19 +20,23 @@
 
 namespace softraster {
 
-inline bool depth_passes(DepthFunc f, float z, float stored) {
+// z against the stored depth, for one sample (float -> bool) or eight (f8 -> lane mask).
+template <class T>
+inline auto depth_passes(DepthFunc f, T z, T stored) -> decltype(z < stored) {
+    using Mask = decltype(z < stored);
     switch (f) {
-        case DepthFunc::Never: return false;
+        case DepthFunc::Never: return Mask{};
         case DepthFunc::Less: return z < stored;
         case DepthFunc::Equal: return z == stored;
         case DepthFunc::LessEqual: return z <= stored;
         case DepthFunc::Greater: return z > stored;
         case DepthFunc::NotEqual: return z != stored;
         case DepthFunc::GreaterEqual: return z >= stored;
-        case DepthFunc::Always: return true;
+        case DepthFunc::Always: return Mask((z == z) | (z != z));  // true in every lane, NaN too
     }
-    return false;
+    return Mask{};
 }
+
 
 // x * y / 255 for 8-bit x, y, rounded to nearest: the exact unorm8 product that GPUs and
 // llvmpipe use ((t + 128 + ((t + 128) >> 8)) >> 8 with t = x * y, Blinn 1995).
@@ -80,20 +84,6 @@ inline void merge_fragment(const RenderState& st, Rgba8* color, float* depth, un
 }
 
 // ---- eight pixels of a row at once (see fragment_shading.h)
-
-inline simd::i8 depth_passes(DepthFunc f, simd::f8 z, simd::f8 stored) {
-    switch (f) {
-        case DepthFunc::Never: return simd::splat_i(0);
-        case DepthFunc::Less: return z < stored;
-        case DepthFunc::Equal: return z == stored;
-        case DepthFunc::LessEqual: return z <= stored;
-        case DepthFunc::Greater: return z > stored;
-        case DepthFunc::NotEqual: return z != stored;
-        case DepthFunc::GreaterEqual: return z >= stored;
-        case DepthFunc::Always: return simd::splat_i(-1);
-    }
-    return simd::splat_i(0);
-}
 
 inline simd::i8 mul_unorm8(simd::i8 x, simd::i8 y) {
     const simd::i8 t = x * y + 128;
