@@ -1,6 +1,9 @@
 // Shared helpers for the unit tests: tiny shaders that take clip-space positions directly.
 #pragma once
+#include <filesystem>
+#include <fstream>
 #include <random>
+#include <string>
 #include <span>
 #include <vector>
 
@@ -56,6 +59,29 @@ struct CaptureShader {
 // Window position (pixels, y down) and depth -> clip coordinates with w = 1.
 inline glm::vec4 window_to_clip(float x, float y, int width, int height, float z = 0.5f, float w = 1.0f) {
     return glm::vec4((2.0f * x / float(width) - 1.0f) * w, (1.0f - 2.0f * y / float(height)) * w, (2.0f * z - 1.0f) * w, w);
+}
+
+// Writes `contents` to <temp>/<folder>/<name> and returns the path.
+inline std::filesystem::path write_temp_file(const std::string& folder, const std::string& name, const std::string& contents) {
+    const auto dir = std::filesystem::temp_directory_path() / folder;
+    std::filesystem::create_directories(dir);
+    const auto path = dir / name;
+    std::ofstream(path, std::ios::binary) << contents;
+    return path;
+}
+
+// Two triangles per cell of an n x n grid of (n + 1)^2 row-major vertices; diagonal(a) picks,
+// for cell corner a, whether the cell is split along a-c (true) or b-d.
+template <class Diagonal>
+std::vector<uint32_t> grid_indices(int n, Diagonal&& diagonal) {
+    std::vector<uint32_t> idx;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n) + 2, d = a + uint32_t(n) + 1;
+            if (diagonal(a)) idx.insert(idx.end(), {a, b, c, a, c, d});
+            else idx.insert(idx.end(), {a, b, d, b, c, d});
+        }
+    return idx;
 }
 
 template <class S>

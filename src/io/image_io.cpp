@@ -6,22 +6,13 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <system_error>
 
+#include "io/read_file.h"
 #include "softraster/error.h"
 
 namespace softraster {
 namespace {
-
-std::string read_file_bytes(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": file not found");
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string() + ": cannot open file");
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 enum class Format { Png, Jpeg, Bmp, Tga, Unknown };
 
@@ -94,7 +85,7 @@ void check_complete(const std::string& b, Format f, const std::string& name) {
 
 Image read_image(const std::filesystem::path& path) {
     const std::string name = path.string();
-    const std::string bytes = read_file_bytes(path);
+    const std::string bytes = read_whole_file(path);
     if (bytes.empty()) throw InputError(name + ": empty file");
     const Format expected = format_from_extension(path);
     if (expected == Format::Unknown)

@@ -2,15 +2,11 @@
 #pragma once
 #include <charconv>
 #include <cstdint>
-#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace softraster {
-
-// The whole file, or InputError("<path>: file not found" / "cannot open file").
-std::string read_text_file(const std::filesystem::path& path);
 
 // Whitespace-separated tokens of a line.
 std::vector<std::string_view> split_tokens(std::string_view line);

@@ -5,6 +5,7 @@
 #include <string>
 #include <tuple>
 
+#include "io/read_file.h"
 #include "io/text_parse.h"
 #include "softraster/error.h"
 #include "softraster/scene/mesh.h"
@@ -151,7 +152,7 @@ struct ObjReader {
 Mesh load_obj(const std::filesystem::path& path) {
     ObjReader r;
     r.name = path.string();
-    const std::string text = read_text_file(path);
+    const std::string text = read_whole_file(path);
     size_t pos = 0;
     while (pos < text.size()) {
         size_t end = text.find('\n', pos);

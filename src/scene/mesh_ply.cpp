@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "io/read_file.h"
 #include "io/text_parse.h"
 #include "softraster/error.h"
 #include "softraster/scene/mesh.h"
@@ -114,7 +115,7 @@ private:
 
 Mesh load_ply(const std::filesystem::path& path) {
     const std::string name = path.string();
-    const std::string text = read_text_file(path);
+    const std::string text = read_whole_file(path);
     auto fail_at = [&](size_t line, const std::string& what) -> InputError {
         return InputError(name + ":" + std::to_string(line) + ": " + what);
     };

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "io/read_file.h"
 #include "io/text_parse.h"
 #include "softraster/error.h"
 #include "softraster/io/image_io.h"
@@ -263,7 +264,7 @@ struct Loader {
 
 Scene load_scene(const std::filesystem::path& path) {
     const std::string file = path.string();
-    const std::string text = read_text_file(path);
+    const std::string text = read_whole_file(path);
     json root;
     try {
         root = json::parse(text);

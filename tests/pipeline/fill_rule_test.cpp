@@ -88,12 +88,7 @@ Mesh2D grid(std::mt19937& rng, int n) {
             if (i > 0 && i < n && j > 0 && j < n) q += glm::vec2(jitter(rng), jitter(rng)) / float(n);
             m.points.push_back(map(q));
         }
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n) + 2, d = a + uint32_t(n) + 1;
-            if (u(rng) < 0.5f) m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
-            else m.indices.insert(m.indices.end(), {a, b, d, b, c, d});
-        }
+    m.indices = grid_indices(n, [&](uint32_t) { return u(rng) < 0.5f; });
     std::vector<glm::vec2> corners = {map({0, 0}), map({1, 0}), map({1, 1}), map({0, 1})};
     // Make the hull clockwise on screen (y down).
     const glm::vec2 e1 = corners[1] - corners[0], e2 = corners[2] - corners[0];
@@ -145,33 +140,29 @@ Mesh2D polygon(std::mt19937& rng, bool fan) {
     return m;
 }
 
+// 30 meshes from make(rng, iteration), each checked with 1 and with 4 samples.
+template <class Make>
+void expect_exactly_once_for_30(unsigned seed, Make&& make) {
+    std::mt19937 rng(seed);
+    for (int iter = 0; iter < 30; ++iter) {
+        const Mesh2D m = make(rng, iter);
+        expect_exactly_once(m, 1, rng);
+        expect_exactly_once(m, 4, rng);
+    }
+}
+
 }  // namespace
 
 TEST(FillRule, JitteredGridsCoverEachSampleOnce) {
-    std::mt19937 rng(7);
-    for (int iter = 0; iter < 30; ++iter) {
-        const Mesh2D m = grid(rng, 2 + iter % 9);
-        expect_exactly_once(m, 1, rng);
-        expect_exactly_once(m, 4, rng);
-    }
+    expect_exactly_once_for_30(7, [](std::mt19937& rng, int iter) { return grid(rng, 2 + iter % 9); });
 }
 
 TEST(FillRule, FansCoverEachSampleOnce) {
-    std::mt19937 rng(11);
-    for (int iter = 0; iter < 30; ++iter) {
-        const Mesh2D m = polygon(rng, true);
-        expect_exactly_once(m, 1, rng);
-        expect_exactly_once(m, 4, rng);
-    }
+    expect_exactly_once_for_30(11, [](std::mt19937& rng, int) { return polygon(rng, true); });
 }
 
 TEST(FillRule, RandomPolygonTriangulationsCoverEachSampleOnce) {
-    std::mt19937 rng(13);
-    for (int iter = 0; iter < 30; ++iter) {
-        const Mesh2D m = polygon(rng, false);
-        expect_exactly_once(m, 1, rng);
-        expect_exactly_once(m, 4, rng);
-    }
+    expect_exactly_once_for_30(13, [](std::mt19937& rng, int) { return polygon(rng, false); });
 }
 
 TEST(FillRule, AxisAlignedEdgesOnSampleCenters) {
@@ -213,12 +204,7 @@ TEST(FillRule, ClippedGroundCoversEverySampleOnce) {
                 const glm::vec3 p(-10.0f + 20.0f * q.x / n, 0.0f, -10.0f + 20.0f * q.y / n);
                 v.push_back({vp * glm::vec4(p, 1.0f), 0});
             }
-        std::vector<uint32_t> idx;
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n) + 2, d = a + uint32_t(n) + 1;
-                idx.insert(idx.end(), {a, b, c, a, c, d});
-            }
+        const std::vector<uint32_t> idx = grid_indices(n, [](uint32_t) { return true; });
         draw(ctx, ConstantColorShader{glm::vec4(1, 1, 1, 1.0f / 255.0f)}, v, idx);
         for (size_t i = 0; i < size_t(W) * H * size_t(samples); ++i)
             ASSERT_EQ(fb.color_data()[i].r, 1) << "sample " << i << " samples=" << samples;

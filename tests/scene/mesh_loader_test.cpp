@@ -10,17 +10,14 @@
 
 #include "softraster/error.h"
 #include "softraster/scene/mesh.h"
+#include "test_support.h"
 
 using namespace softraster;
 
 namespace {
 
 std::filesystem::path write_temp(const std::string& name, const std::string& contents) {
-    const auto dir = std::filesystem::temp_directory_path() / "softraster_mesh_tests";
-    std::filesystem::create_directories(dir);
-    const auto path = dir / name;
-    std::ofstream(path, std::ios::binary) << contents;
-    return path;
+    return test::write_temp_file("softraster_mesh_tests", name, contents);
 }
 
 std::string error_of(const std::function<void()>& f) {

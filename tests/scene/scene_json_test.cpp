@@ -10,17 +10,14 @@
 #include "softraster/error.h"
 #include "softraster/scene/scene.h"
 #include "softraster/scene/scene_renderer.h"
+#include "test_support.h"
 
 using namespace softraster;
 
 namespace {
 
 std::filesystem::path write_scene(const std::string& name, const std::string& json) {
-    const auto dir = std::filesystem::temp_directory_path() / "softraster_scene_tests";
-    std::filesystem::create_directories(dir);
-    const auto p = dir / name;
-    std::ofstream(p) << json;
-    return p;
+    return test::write_temp_file("softraster_scene_tests", name, json);
 }
 
 const char* kMinimal = R"({"version": 1, "image": {"width": 32, "height": 16},
