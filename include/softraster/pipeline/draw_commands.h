@@ -150,27 +150,23 @@ private:
     // Pass 1: depth test and write, and the owner of every sample that passes.
     void visibility_body(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) {
         Framebuffer& fb = *t.fb;
+        const int width = fb.width();
         for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
             const uint32_t me = owner_id(draw, id);
             if constexpr (Samples == 1) {  // eight pixels at a time
                 using namespace simd;
                 rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
                     float* depth = fb.depth_data() + fb.sample_index(0, y);
-                    uint32_t* owner = owners + size_t(y - rect.y0) * kTileSize;  // indexed by x - rect.x0
+                    int32_t* owner = reinterpret_cast<int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
                     const f8 j = splat(float(y - setup.origin_y));
-                    for (int x = x_begin; x < x_end; x += kLanes) {
-                        const int count = std::min(kLanes, x_end - x);
+                    for_each_group(x_begin, x_end, [&](int x, i8 pass) {
                         const f8 z = setup.z.a0 + setup.z.dadx * (to_float(kLaneIndex) + float(x - setup.origin_x)) + setup.z.dady * j;
-                        f8 stored = splat(0.0f);
-                        std::memcpy(&stored, depth + x, size_t(count) * 4);
-                        const i8 pass = (kLaneIndex < count) & depth_passes(state_.depth_func, z, stored);
-                        stored = select(pass, z, stored);
-                        std::memcpy(depth + x, &stored, size_t(count) * 4);
-                        i8 o{};
-                        std::memcpy(&o, owner + (x - rect.x0), size_t(count) * 4);
-                        o = select(pass, splat_i(int32_t(me)), o);
-                        std::memcpy(owner + (x - rect.x0), &o, size_t(count) * 4);
-                    }
+                        const f8 stored = load_group<f8>(depth, x, width);
+                        pass &= depth_passes(state_.depth_func, z, stored);
+                        store_group(depth, x, width, select(pass, z, stored));
+                        const int ox = x - rect.x0, ow = width - rect.x0;
+                        store_group(owner, ox, ow, select(pass, splat_i(int32_t(me)), load_group<i8>(owner, ox, ow)));
+                    });
                 });
                 return;
             }
@@ -190,21 +186,19 @@ private:
     uint64_t shading_body(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) {
         using V = typename S::Varyings;
         Framebuffer& fb = *t.fb;
+        const int width = fb.width();
         uint64_t shaded = 0;
         for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
             const uint32_t me = owner_id(draw, id);
             if constexpr (Samples == 1 && BatchShader<S>) {  // eight pixels at a time
                 using namespace simd;
                 rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
-                    const uint32_t* owner = owners + size_t(y - rect.y0) * kTileSize;  // indexed by x - rect.x0
+                    const int32_t* owner = reinterpret_cast<const int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
                     Rgba8* color = fb.color_data() + fb.sample_index(0, y);
                     const f8 j = splat(float(y - setup.origin_y));
-                    for (int x = x_begin; x < x_end; x += kLanes) {
-                        const int count = std::min(kLanes, x_end - x);
-                        i8 o{};
-                        std::memcpy(&o, owner + (x - rect.x0), size_t(count) * 4);
-                        const i8 mine = (kLaneIndex < count) & (o == int32_t(me));
-                        if (!any(mine)) continue;
+                    for_each_group(x_begin, x_end, [&](int x, i8 lanes) {
+                        const i8 mine = lanes & (load_group<i8>(owner, x - rect.x0, width - rect.x0) == int32_t(me));
+                        if (!any(mine)) return;
                         const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
                         const f8 w = 1.0f / (setup.inv_w.a0 + setup.inv_w.dadx * i + setup.inv_w.dady * j);
                         std::array<f8, N> var;
@@ -213,8 +207,8 @@ private:
                         std::array<f8, 4> rgba;
                         shader_.fragment_batch(var, setup.z.a0 + setup.z.dadx * i + setup.z.dady * j, setup.front_facing, rgba);
                         shaded += unsigned(__builtin_popcount(bits(mine)));
-                        blend_row<BlendMode::Opaque>(color + x, count, mine, rgba);
-                    }
+                        blend_group<BlendMode::Opaque>(color, x, width, mine, rgba);
+                    });
                 });
                 return;
             }

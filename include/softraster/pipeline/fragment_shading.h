@@ -68,27 +68,25 @@ uint64_t draw_triangle_batched(const S& shader, const RenderState& st, Framebuff
         const f8 j = splat(float(y - t.origin_y));
         float* depth = fb.depth_data() + fb.sample_index(0, y);
         Rgba8* color = fb.color_data() + fb.sample_index(0, y);
-        for (int x = x_begin; x < x_end; x += kLanes) {
-            const int count = std::min(kLanes, x_end - x);
+        const int width = fb.width();
+        for_each_group(x_begin, x_end, [&](int x, i8 pass) {
             const f8 i = to_float(kLaneIndex) + float(x - t.origin_x);
             const f8 z = t.z.a0 + t.z.dadx * i + t.z.dady * j;
-            f8 stored = splat(0.0f);
-            std::memcpy(&stored, depth + x, size_t(count) * 4);
-            i8 pass = kLaneIndex < count;
-            if (st.depth_test) pass &= depth_passes(st.depth_func, z, stored);
-            if (!any(pass)) continue;
+            f8 stored{};
+            if (st.depth_test) {
+                stored = load_group<f8>(depth, x, width);
+                pass &= depth_passes(st.depth_func, z, stored);
+            }
+            if (!any(pass)) return;
             const f8 w = 1.0f / (t.inv_w.a0 + t.inv_w.dadx * i + t.inv_w.dady * j);
             std::array<f8, N> var;
             for (size_t k = 0; k < size_t(N); ++k) var[k] = (t.var_w[k].a0 + t.var_w[k].dadx * i + t.var_w[k].dady * j) * w;
             std::array<f8, 4> rgba;
             shader.fragment_batch(var, z, t.front_facing, rgba);
             shaded += unsigned(__builtin_popcount(bits(pass)));
-            if (st.depth_test && st.depth_write) {
-                stored = select(pass, z, stored);
-                std::memcpy(depth + x, &stored, size_t(count) * 4);
-            }
-            if (st.color_write) blend_row<B>(color + x, count, pass, rgba);
-        }
+            if (st.depth_test && st.depth_write) store_group(depth, x, width, select(pass, z, stored));
+            if (st.color_write) blend_group<B>(color, x, width, pass, rgba);
+        });
     });
     return shaded;
 }

@@ -90,13 +90,12 @@ inline simd::i8 mul_unorm8(simd::i8 x, simd::i8 y) {
     return (t + (t >> 8)) >> 8;
 }
 
-// Blends colors c (r, g, b, a lanes) into `count` RGBA8 pixels at dst, where `write` is set:
-// the same arithmetic as blend<B> above, lane by lane.
+// Blends colors c (r, g, b, a lanes) into the group of eight RGBA8 pixels from row[x] on
+// (simd.h), where `write` is set: the same arithmetic as blend<B> above, lane by lane.
 template <BlendMode B>
-inline void blend_row(Rgba8* dst, int count, simd::i8 write, const std::array<simd::f8, 4>& c) {
+inline void blend_group(Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
     using simd::i8;
-    i8 old{};
-    std::memcpy(&old, dst, size_t(count) * 4);
+    const i8 old = simd::load_group<i8>(row, x, width);
     const i8 sr = simd::quantize_unorm8(c[0]), sg = simd::quantize_unorm8(c[1]), sb = simd::quantize_unorm8(c[2]),
              sa = simd::quantize_unorm8(c[3]);
     i8 r = sr, g = sg, b = sb, a = sa;
@@ -120,8 +119,7 @@ inline void blend_row(Rgba8* dst, int count, simd::i8 write, const std::array<si
         b = b > max ? max : b;
         a = a > max ? max : a;
     }
-    const i8 packed = simd::select(write, r | (g << 8) | (b << 16) | (a << 24), old);
-    std::memcpy(static_cast<void*>(dst), &packed, size_t(count) * 4);
+    simd::store_group(row, x, width, simd::select(write, r | (g << 8) | (b << 16) | (a << 24), old));
 }
 
 }  // namespace softraster

@@ -76,6 +76,49 @@ inline unsigned bits(i8 m) {
     return b;
 }
 
+// ---- rows of eight pixels
+//
+// A span of pixels is walked in groups of eight aligned to multiples of eight in x. Tiles
+// are 64 pixels wide, so a group never straddles two tiles and the thread drawing a tile may
+// load and store all eight lanes of a group (writing back the old value where a lane is not
+// drawn): one unaligned vector load or store each, never a variable-length copy. Only at the
+// right edge of an image whose width is not a multiple of eight does a group have fewer than
+// eight pixels in memory.
+
+// Calls f(x, lanes) for each group of eight pixels [x, x + 8) that the span [x_begin, x_end)
+// touches, `lanes` set for the pixels in the span.
+template <class F>
+inline void for_each_group(int x_begin, int x_end, F&& f) {
+    for (int x = x_begin & ~(kLanes - 1); x < x_end; x += kLanes) {
+        const i8 px = kLaneIndex + x;
+        f(x, (px >= x_begin) & (px < x_end));
+    }
+}
+
+// Eight 4-byte values of a row from p[x] on, of which p[x .. width) exist; lanes past the
+// end of the row read as zero.
+template <class V, class T>
+inline V load_group(const T* p, int x, int width) {
+    static_assert(sizeof(T) == 4 && sizeof(V) == 4 * kLanes);
+    V v{};
+    if (x + kLanes <= width) {
+        std::memcpy(&v, p + x, sizeof v);
+    } else {
+        for (int l = 0; l < width - x; ++l) std::memcpy(reinterpret_cast<char*>(&v) + 4 * l, p + x + l, 4);
+    }
+    return v;
+}
+// Stores all eight lanes to p[x] on, except those past the end of the row.
+template <class V, class T>
+inline void store_group(T* p, int x, int width, V v) {
+    static_assert(sizeof(T) == 4 && sizeof(V) == 4 * kLanes);
+    if (x + kLanes <= width) {
+        std::memcpy(static_cast<void*>(p + x), &v, sizeof v);
+    } else {
+        for (int l = 0; l < width - x; ++l) std::memcpy(static_cast<void*>(p + x + l), reinterpret_cast<const char*>(&v) + 4 * l, 4);
+    }
+}
+
 // floor(255 clamp(x) + 0.5): the spec's 8-bit conversion, per lane.
 inline i8 quantize_unorm8(f8 x) { return to_int(clamp01(x) * 255.0f + 0.5f); }
 
