@@ -239,6 +239,17 @@ def make_scenes():
                         material={"texture": "textures/tiny4.png", "specular": [0.5, 0.5, 0.5], "blend": "alpha" if f.endswith('ascii.ply') else "opaque"}))
     scene('mesh_variants', 480, 240, persp([0, 0, 5], [0, 0, 0], fov_y=50), objs, LIGHTS, [0.2, 0.2, 0.2, 1])
 
+    # a size that is not a multiple of eight or of the 64-pixel tile: the last group of eight
+    # pixels in each row is partly outside the image. Stacked opaque layers (hidden-surface
+    # removal), then blended and opaque objects across the right and bottom edges.
+    objs = [builtin('plane', {"translate": [0.1 * k, 0, -4 + k], "rotate": [90, 0, 0]},
+                    {"shading": "lambert", "texture": "textures/grid64.png", "filter": "bilinear", "color": [0.5 + 0.1 * k, 0.8, 0.7, 1]}, params={"size": 9})
+            for k in range(4)]
+    objs += [builtin('uv_sphere', {"translate": [1.5, -0.3, 0.5]}, {"shading": "blinn_phong", "blend": "alpha", "color": [1, 0.4, 0.2, 0.6], "specular": [0.5, 0.5, 0.5]}, params={"radius": 0.7}),
+             builtin('torus', {"translate": [0.6, -1.1, 0.8], "rotate": [60, 20, 0]}, {"shading": "gouraud", "color": [0.3, 0.7, 1, 1]}, params={"major": 0.5, "minor": 0.2}),
+             builtin('cube', {"translate": [-1.2, 0.4, 0.6], "rotate": [30, 40, 0]}, {"shading": "lambert", "blend": "additive", "color": [0.2, 0.6, 0.3, 0.7]}, params={"size": 0.7}, cull="none")]
+    scene('odd_size_edges', 301, 203, persp([0, 0, 4], [0, 0, 0]), objs, LIGHTS, [0.1, 0.1, 0.1, 1])
+
 
 if __name__ == '__main__':
     make_textures()
