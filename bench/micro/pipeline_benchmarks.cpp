@@ -21,12 +21,17 @@ ShadedVertex<N> vertex(float x, float y) {
     return v;
 }
 
+// (AVX2 code, as in the back end)
+[[gnu::noinline]] SOFTRASTER_AVX2_TARGET bool setup_avx2(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c,
+                                                        const Rect& tile, TriangleSetup<N>& t) {
+    return setup_triangle(a, b, c, FrontFace::CCW, tile, t);
+}
 void BM_TriangleSetup(benchmark::State& state) {
     const ShadedVertex<N> a = vertex(100.3f, 100.7f), b = vertex(103.9f, 101.2f), c = vertex(101.1f, 104.6f);
     TriangleSetup<N> t;
     const Rect tile{64, 64, 128, 128};
     for (auto _ : state) {
-        benchmark::DoNotOptimize(setup_triangle(a, b, c, FrontFace::CCW, tile, t));
+        benchmark::DoNotOptimize(setup_avx2(a, b, c, tile, t));
         benchmark::ClobberMemory();
     }
 }
@@ -48,6 +53,43 @@ void BM_Traversal(benchmark::State& state) {
 }
 BENCHMARK(BM_Traversal<1>)->Arg(2)->Arg(8)->Arg(63);
 BENCHMARK(BM_Traversal<4>)->Arg(2)->Arg(8)->Arg(63);
+
+// The same in groups of eight pixels, as the back end walks them (AVX2 code, as there):
+// row spans (rasterization.h) and the 32-bit path for small triangles (rasterization_small.h).
+SOFTRASTER_AVX2_TARGET int64_t covered_by_spans(const TriangleSetup<N>& t) {
+    simd::i8 lanes{};
+    rasterize_spans(t, t.bounds, [&](int, int x_begin, int x_end) {
+        simd::for_each_group(x_begin, x_end, [&](int, simd::i8 covered) { lanes -= covered; });
+    });
+    int64_t n = 0;
+    for (int l = 0; l < simd::kLanes; ++l) n += lanes[l];
+    return n;
+}
+template <int Samples>
+SOFTRASTER_AVX2_TARGET int64_t covered_small(const TriangleSetup<N>& t) {
+    simd::i8 lanes{};
+    rasterize_small<Samples>(t, [&](int, int, const auto& covered) {
+        for (const simd::i8& c : covered) lanes -= c;
+    });
+    int64_t n = 0;
+    for (int l = 0; l < simd::kLanes; ++l) n += lanes[l];
+    return n;
+}
+template <int Samples, bool Small>
+void BM_TraversalGroups(benchmark::State& state) {
+    const float size = float(state.range(0));
+    const ShadedVertex<N> a = vertex(64.2f, 64.4f), b = vertex(64.2f + size, 64.9f), c = vertex(64.6f, 64.1f + size);
+    TriangleSetup<N> t;
+    setup_triangle(a, b, c, FrontFace::CCW, Rect{64, 64, 128, 128}, t);
+    for (auto _ : state) {
+        if constexpr (Small) benchmark::DoNotOptimize(covered_small<Samples>(t));
+        else benchmark::DoNotOptimize(covered_by_spans(t));
+    }
+    state.SetItemsProcessed(state.iterations() * int64_t(size * size / 2));
+}
+BENCHMARK(BM_TraversalGroups<1, false>)->Arg(2)->Arg(8)->Arg(63);
+BENCHMARK(BM_TraversalGroups<1, true>)->Arg(2)->Arg(8)->Arg(63);
+BENCHMARK(BM_TraversalGroups<4, true>)->Arg(2)->Arg(8)->Arg(63);
 
 template <Shading M>
 void BM_Shading(benchmark::State& state) {

@@ -30,15 +30,15 @@ std::pair<size_t, bool> Context::hidden_surface_run(size_t first, int tile, cons
     // the first command), and whether it is worth two passes: several draws and enough
     // overdraw in this tile.
     size_t end = first;
-    double area = 0;
     while (end < commands_.size() && end - first < kMaxRunDraws && commands_[end]->allows_hidden_surface_removal() &&
-           commands_[end]->triangles_in_tile(tile) < kMaxTileTriangles) {
-        area += commands_[end]->covered_area(tile, rect);
+           commands_[end]->triangles_in_tile(tile) < kMaxTileTriangles)
         ++end;
-    }
     if (end == first) return {first + 1, false};
+    if (end - first < 2) return {end, false};  // one draw: no overdraw between draws to remove
+    double area = 0;
+    for (size_t c = first; c < end; ++c) area += commands_[c]->covered_area(tile, rect);
     const double tile_area = double(rect.x1 - rect.x0) * double(rect.y1 - rect.y0);
-    return {end, end - first >= 2 && area >= kOverdrawForHiddenSurfaceRemoval * tile_area};
+    return {end, area >= kOverdrawForHiddenSurfaceRemoval * tile_area};
 }
 
 void Context::execute() {

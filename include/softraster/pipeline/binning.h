@@ -49,6 +49,9 @@ struct TriangleBin {
     std::vector<TriangleRef> refs;         // grouped by tile, draw order within each tile
     std::vector<uint32_t> tile_begin;      // tile t's refs: [tile_begin[t], tile_begin[t + 1])
     std::vector<std::pair<uint32_t, TriangleRef>> pending;  // (tile, triangle) before grouping
+    // Per tile: the pixels its triangles cover, summed (each triangle's area, at most its
+    // bounding box within the tile), an estimate of the overdraw (hidden_surface_removal.h).
+    std::vector<float> covered_area;
 
     const ShadedVertex<N>& vertex(uint32_t i, const ShadedVertex<N>* post) const {
         return (i & kClippedVertex) ? clipped[i & ~kClippedVertex] : post[i];
@@ -66,6 +69,7 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
                    const Viewport& vp, FaceState faces, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
     bin.pending.clear();
+    bin.covered_area.assign(size_t(grid.count()), 0.0f);
     const Rect screen{0, 0, grid.width, grid.height};
     auto emit = [&](uint32_t ia, uint32_t ib, uint32_t ic) {
         const ShadedVertex<N>& a = bin.vertex(ia, post);
@@ -78,9 +82,15 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
         const int x0 = std::max(r.x0, screen.x0), y0 = std::max(r.y0, screen.y0);
         const int x1 = std::min(r.x1, screen.x1), y1 = std::min(r.y1, screen.y1);
         if (x0 >= x1 || y0 >= y1) return;
+        const float area = float(std::abs(area2)) * (0.5f / float(kSubpixelOne * kSubpixelOne));
         for (int ty = y0 / kTileSize; ty <= (y1 - 1) / kTileSize; ++ty)
-            for (int tx = x0 / kTileSize; tx <= (x1 - 1) / kTileSize; ++tx)
-                bin.pending.push_back({uint32_t(ty * grid.tiles_x + tx), TriangleRef{{ia, ib, ic}}});
+            for (int tx = x0 / kTileSize; tx <= (x1 - 1) / kTileSize; ++tx) {
+                const uint32_t tile = uint32_t(ty * grid.tiles_x + tx);
+                bin.pending.push_back({tile, TriangleRef{{ia, ib, ic}}});
+                const int w = std::min(x1, (tx + 1) * kTileSize) - std::max(x0, tx * kTileSize);
+                const int h = std::min(y1, (ty + 1) * kTileSize) - std::max(y0, ty * kTileSize);
+                bin.covered_area[tile] += std::min(float(w * h), area);
+            }
     };
     ClipPolygon<N> poly;
     for (size_t i = 0; i + 2 < indices.size(); i += 3) {

@@ -81,8 +81,8 @@ public:
 
     size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
     void process_vertex_chunk(size_t c, const Target& t) override {
-        const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
-        process_vertices(shader_, vertices_, begin, end, t.planes, t.viewport, std::span<ShadedVertex<N>>(post_));
+        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) process_vertex_chunk_avx2(c, t);
+        else process_vertex_chunk_generic(c, t);
     }
     void prepare() override {
         post_.resize(vertices_.size());
@@ -91,9 +91,8 @@ public:
 
     size_t primitive_chunks() const override { return (indices_.size() / 3 + kTriangleChunk - 1) / kTriangleChunk; }
     void bin_primitive_chunk(size_t c, const Target& t) override {
-        const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
-        bin_triangles(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), t.planes, t.viewport,
-                      FaceState{state_.cull, state_.front_face}, t.grid, bins_[c]);
+        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) bin_primitive_chunk_avx2(c, t);
+        else bin_primitive_chunk_generic(c, t);
     }
 
     uint64_t draw_tile(int tile, const Rect& rect, const Target& t) override {
@@ -109,19 +108,9 @@ public:
         for (const TriangleBin<N>& bin : bins_) n += bin.tile_begin[size_t(tile) + 1] - bin.tile_begin[size_t(tile)];
         return n;
     }
-    double covered_area(int tile, const Rect& rect) const override {
+    double covered_area(int tile, const Rect&) const override {
         double area = 0;
-        for (const TriangleBin<N>& bin : bins_)
-            for (uint32_t k = bin.tile_begin[size_t(tile)]; k < bin.tile_begin[size_t(tile) + 1]; ++k) {
-                const TriangleRef& r = bin.refs[k];
-                const ShadedVertex<N>&a = bin.vertex(r.v[0], post_.data()), &b = bin.vertex(r.v[1], post_.data()),
-                                      &c = bin.vertex(r.v[2], post_.data());
-                const Rect box = pixel_bounds(a, b, c);
-                const double in_tile = double(std::max(0, std::min(box.x1, rect.x1) - std::max(box.x0, rect.x0))) *
-                                       double(std::max(0, std::min(box.y1, rect.y1) - std::max(box.y0, rect.y0)));
-                const double triangle = std::fabs(double(signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y))) / (2.0 * 65536.0);
-                area += std::min(in_tile, triangle);
-            }
+        for (const TriangleBin<N>& bin : bins_) area += bin.covered_area[size_t(tile)];
         return area;
     }
     void visibility_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) override {
@@ -145,6 +134,21 @@ private:
     }
     SOFTRASTER_FLATTEN uint64_t shading_generic(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) {
         return shading_body(tile, rect, t, draw, owners);
+    }
+
+    // The front end, like the back end, twice: for any x86-64 and with AVX2 (same bits).
+    SOFTRASTER_AVX2_TARGET void process_vertex_chunk_avx2(size_t c, const Target& t) { process_vertex_chunk_body(c, t); }
+    SOFTRASTER_FLATTEN void process_vertex_chunk_generic(size_t c, const Target& t) { process_vertex_chunk_body(c, t); }
+    void process_vertex_chunk_body(size_t c, const Target& t) {
+        const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
+        process_vertices(shader_, vertices_, begin, end, t.planes, t.viewport, std::span<ShadedVertex<N>>(post_));
+    }
+    SOFTRASTER_AVX2_TARGET void bin_primitive_chunk_avx2(size_t c, const Target& t) { bin_primitive_chunk_body(c, t); }
+    SOFTRASTER_FLATTEN void bin_primitive_chunk_generic(size_t c, const Target& t) { bin_primitive_chunk_body(c, t); }
+    void bin_primitive_chunk_body(size_t c, const Target& t) {
+        const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
+        bin_triangles(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), t.planes, t.viewport,
+                      FaceState{state_.cull, state_.front_face}, t.grid, bins_[c]);
     }
 
     // Pass 1: depth test and write, and the owner of every sample that passes.
@@ -232,6 +236,11 @@ private:
         return shaded;
     }
 
+    // Draws that shade through the fragment queue: opaque, with a shader that never discards.
+    static constexpr bool kQueued = BatchShader<S> && PureShader<S> && B == BlendMode::Opaque;
+    // A triangle at least this big in the tile is shaded directly, row group by row group.
+    static bool is_large(const Rect& r) { return (r.x1 - r.x0) >= 32 && (r.y1 - r.y0) >= 16; }
+
     // The same code twice: once for any x86-64, once with AVX2 allowed, where eight-lane
     // vectors are one register. Everything it calls is inlined into each (flatten).
     SOFTRASTER_AVX2_TARGET uint64_t draw_tile_avx2(int tile, const Rect& rect, const Target& t) {
@@ -245,6 +254,24 @@ private:
     template <bool WideLanes>
     uint64_t draw_tile_body(int tile, const Rect& rect, const Target& t) {
         uint64_t shaded = 0;
+        if constexpr (kQueued) {
+            if (state_.color_write && triangles_in_tile(tile) > 0) {  // small triangles shaded in full groups of eight (fragment_queue.h)
+                // One queue per thread, off the stack: a few kilobytes that would otherwise
+                // sit among the tile loop's spilled registers.
+                static thread_local FragmentQueue<S, Samples> queue;
+                queue.start(shader_, *t.fb);
+                for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+                    if (Samples == 1 && is_large(setup.bounds)) {  // its groups are full anyway
+                        queue.flush();
+                        shaded += draw_triangle_batched<B>(shader_, state_, *t.fb, setup);
+                    } else {
+                        shaded += queue_triangle<Samples>(state_, *t.fb, setup, queue);
+                    }
+                });
+                queue.flush();
+                return shaded;
+            }
+        }
         for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
             if constexpr (Samples == 1 && BatchShader<S>) {
                 if (WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {
@@ -263,8 +290,22 @@ private:
     void for_each_setup(int tile, const Rect& rect, F&& f) const {
         TriangleSetup<N> setup;
         uint32_t ordinal = 0;
+        // Setup reads the window position and varyings of three vertices anywhere in the
+        // draw's vertex buffer: fetch those of a triangle a few places ahead into the cache
+        // while this one is drawn, or the loads wait on memory (a tile revisits every draw).
+        constexpr uint32_t kAhead = 4;
+        auto prefetch = [&](const TriangleBin<N>& bin, const TriangleRef& r) {
+            for (uint32_t i : r.v) {
+                const ShadedVertex<N>& v = bin.vertex(i, post_.data());
+                __builtin_prefetch(&v.window);
+                __builtin_prefetch(reinterpret_cast<const char*>(&v.Y) + sizeof v.Y - 1);
+            }
+        };
         for (const TriangleBin<N>& bin : bins_)
-            for (uint32_t k = bin.tile_begin[size_t(tile)]; k < bin.tile_begin[size_t(tile) + 1]; ++k, ++ordinal) {
+            for (uint32_t k = bin.tile_begin[size_t(tile)], end = bin.tile_begin[size_t(tile) + 1]; k < end; ++k, ++ordinal) {
+                if (k == bin.tile_begin[size_t(tile)])
+                    for (uint32_t a = k + 1; a < std::min(end, k + kAhead); ++a) prefetch(bin, bin.refs[a]);
+                if (k + kAhead < end) prefetch(bin, bin.refs[k + kAhead]);
                 const TriangleRef& r = bin.refs[k];
                 if (setup_triangle(bin.vertex(r.v[0], post_.data()), bin.vertex(r.v[1], post_.data()),
                                    bin.vertex(r.v[2], post_.data()), state_.front_face, rect, setup))

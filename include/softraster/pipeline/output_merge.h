@@ -90,35 +90,43 @@ inline simd::i8 mul_unorm8(simd::i8 x, simd::i8 y) {
     return (t + (t >> 8)) >> 8;
 }
 
+// Eight colors (r, g, b, a lanes) quantized to 8 bits per channel, packed as Rgba8.
+inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c) {
+    using simd::quantize_unorm8;
+    return quantize_unorm8(c[0]) | (quantize_unorm8(c[1]) << 8) | (quantize_unorm8(c[2]) << 16) | (quantize_unorm8(c[3]) << 24);
+}
+
 // Blends colors c (r, g, b, a lanes) into the group of eight RGBA8 pixels from row[x] on
 // (simd.h), where `write` is set: the same arithmetic as blend<B> above, lane by lane.
 template <BlendMode B>
 inline void blend_group(Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
     using simd::i8;
     const i8 old = simd::load_group<i8>(row, x, width);
+    if constexpr (B == BlendMode::Opaque) {
+        simd::store_group(row, x, width, simd::select(write, quantize_pack_rgba8(c), old));
+        return;
+    }
     const i8 sr = simd::quantize_unorm8(c[0]), sg = simd::quantize_unorm8(c[1]), sb = simd::quantize_unorm8(c[2]),
              sa = simd::quantize_unorm8(c[3]);
-    i8 r = sr, g = sg, b = sb, a = sa;
-    if constexpr (B != BlendMode::Opaque) {
-        const i8 dr = old & 255, dg = (old >> 8) & 255, db = (old >> 16) & 255, da = (old >> 24) & 255;
-        const i8 max = simd::splat_i(255);
-        if constexpr (B == BlendMode::Alpha) {
-            const i8 inv = 255 - sa;
-            r = mul_unorm8(sr, sa) + mul_unorm8(dr, inv);
-            g = mul_unorm8(sg, sa) + mul_unorm8(dg, inv);
-            b = mul_unorm8(sb, sa) + mul_unorm8(db, inv);
-            a = sa + mul_unorm8(da, inv);
-        } else {
-            r = mul_unorm8(sr, sa) + dr;
-            g = mul_unorm8(sg, sa) + dg;
-            b = mul_unorm8(sb, sa) + db;
-            a = da;
-        }
-        r = r > max ? max : r;
-        g = g > max ? max : g;
-        b = b > max ? max : b;
-        a = a > max ? max : a;
+    const i8 dr = old & 255, dg = (old >> 8) & 255, db = (old >> 16) & 255, da = (old >> 24) & 255;
+    i8 r, g, b, a;
+    if constexpr (B == BlendMode::Alpha) {
+        const i8 inv = 255 - sa;
+        r = mul_unorm8(sr, sa) + mul_unorm8(dr, inv);
+        g = mul_unorm8(sg, sa) + mul_unorm8(dg, inv);
+        b = mul_unorm8(sb, sa) + mul_unorm8(db, inv);
+        a = sa + mul_unorm8(da, inv);
+    } else {
+        r = mul_unorm8(sr, sa) + dr;
+        g = mul_unorm8(sg, sa) + dg;
+        b = mul_unorm8(sb, sa) + db;
+        a = da;
     }
+    const i8 max = simd::splat_i(255);
+    r = r > max ? max : r;
+    g = g > max ? max : g;
+    b = b > max ? max : b;
+    a = a > max ? max : a;
     simd::store_group(row, x, width, simd::select(write, r | (g << 8) | (b << 16) | (a << 24), old));
 }
 

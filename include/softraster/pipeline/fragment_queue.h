@@ -1,0 +1,157 @@
+// Stage 8, fragment shading, for small triangles: fragments that passed the depth test wait
+// in a queue and are shaded eight at a time, whichever triangles they came from.
+//
+// A triangle of a pixel or two fills one or two lanes of a row's group of eight; shaded
+// group by group, most of the eight-lane shader's work would be thrown away (a million-
+// triangle mesh at 1080p averages about one pixel per triangle). Queued, every shader call
+// has eight real fragments. This is the "quad packing" of Masked Software Occlusion
+// Culling's and Larrabee's renderers, applied per pixel: the interpolated varyings
+// travel with each fragment, so the shader does not need to know its triangle.
+//
+// The picture is the same as shading each triangle at once, for an opaque draw whose shader
+// never discards (kPure, hidden_surface_removal.h) and writes color:
+// - depth is tested and written when a fragment is queued, in draw order;
+// - colors are written in queue order, which is draw order, one fragment after another,
+//   so where two queued fragments hit the same pixel the later one still lands last;
+// - opaque colors do not depend on what they overwrite, so writing them later changes nothing.
+// Whoever owns the tile flushes the queue before anything else draws in it.
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "softraster/framebuffer.h"
+#include "softraster/pipeline/output_merge.h"
+#include "softraster/pipeline/shader.h"
+#include "softraster/pipeline/simd.h"
+
+namespace softraster {
+
+namespace detail {
+// For each 8-bit lane mask, the lane indices of its set bits first (in order): a vector
+// permuted by it has the selected lanes at the front (a "compress", which AVX2 lacks).
+inline constexpr std::array<std::array<int32_t, simd::kLanes>, 256> kCompressLanes = [] {
+    std::array<std::array<int32_t, simd::kLanes>, 256> table{};
+    for (unsigned m = 0; m < 256; ++m) {
+        int n = 0;
+        for (int l = 0; l < simd::kLanes; ++l)
+            if (m & (1u << l)) table[m][size_t(n++)] = l;
+        for (; n < simd::kLanes; ++n) table[m][size_t(n)] = 0;
+    }
+    return table;
+}();
+}  // namespace detail
+
+template <class S, int Samples>
+class FragmentQueue {
+public:
+    static constexpr int N = kVaryingCount<typename S::Varyings>;
+
+    // Starts queueing for `shader` into `fb` (the queue is empty).
+    void start(const S& shader, Framebuffer& fb) {
+        shader_ = &shader;
+        color_ = fb.color_data();
+        count_ = 0;
+    }
+
+    // Queues the lanes of `pass` out of eight fragments: window depths z, varyings (already
+    // divided by w), index of each pixel's first sample and the samples it writes.
+    void push(simd::i8 pass, simd::f8 z, const std::array<simd::f8, N>& var, simd::i8 pixel, simd::i8 samples,
+              bool front_facing) {
+        using namespace simd;
+        begin(front_facing);
+        const unsigned m = bits(pass);
+        i8 lanes;
+        std::memcpy(&lanes, detail::kCompressLanes[m].data(), sizeof lanes);
+        auto put = [&](auto* dst, auto v) {  // a whole vector: the queue has room for eight past count_
+            const auto packed = m == 0xffu ? v : __builtin_shuffle(v, lanes);
+            std::memcpy(dst + count_, &packed, sizeof packed);
+        };
+        put(z_.data(), z);
+        for (size_t k = 0; k < size_t(N); ++k) put(var_[k].data(), var[k]);
+        put(pixel_.data(), pixel);
+        if constexpr (Samples > 1) put(samples_.data(), samples);
+        count_ += __builtin_popcount(m);
+        if (count_ >= kCapacity) drain();
+    }
+
+    // Queues one fragment.
+    void push(float z, const std::array<float, N>& var, int32_t pixel, unsigned samples, bool front_facing) {
+        begin(front_facing);
+        z_[size_t(count_)] = z;
+        for (size_t k = 0; k < size_t(N); ++k) var_[k][size_t(count_)] = var[k];
+        pixel_[size_t(count_)] = pixel;
+        samples_[size_t(count_)] = int32_t(samples);
+        if (++count_ >= kCapacity) drain();
+    }
+
+    // Shades and writes everything queued.
+    void flush() {
+        for (int first = 0; first < count_; first += simd::kLanes) shade(first, std::min(simd::kLanes, count_ - first));
+        count_ = 0;
+    }
+
+private:
+    static constexpr int kCapacity = 8 * simd::kLanes;
+    static constexpr size_t kSlots = size_t(kCapacity + simd::kLanes);
+
+    // The shader sees one facing per call: a change of facing flushes.
+    void begin(bool front_facing) {
+        if (front_facing != front_facing_ && count_ > 0) flush();
+        front_facing_ = front_facing;
+    }
+
+    // Shades the full groups of eight and moves what is left (fewer than eight) to the front.
+    void drain() {
+        const int full = count_ - count_ % simd::kLanes;
+        for (int first = 0; first < full; first += simd::kLanes) shade(first, simd::kLanes);
+        const size_t rest = size_t(count_ - full), from = size_t(full);
+        std::copy_n(z_.begin() + from, rest, z_.begin());
+        for (auto& v : var_) std::copy_n(v.begin() + from, rest, v.begin());
+        std::copy_n(pixel_.begin() + from, rest, pixel_.begin());
+        std::copy_n(samples_.begin() + from, rest, samples_.begin());
+        count_ = int(rest);
+    }
+
+    // Shades fragments [first, first + count) and writes their colors in queue order.
+    void shade(int first, int count) {
+        using namespace simd;
+        const i8 real = kLaneIndex < count;
+        // Lanes past the last fragment get the first one's inputs: the shader then only sees
+        // values it could see anyway (a texture lookup at an arbitrary position would not be).
+        auto load = [&](const std::array<float, kSlots>& a) {
+            f8 v;
+            std::memcpy(&v, a.data() + first, sizeof v);
+            return count == kLanes ? v : select(real, v, splat(v[0]));
+        };
+        std::array<f8, N> var;
+        for (size_t k = 0; k < size_t(N); ++k) var[k] = load(var_[k]);
+        std::array<f8, 4> rgba;
+        shader_->fragment_batch(var, load(z_), front_facing_, rgba);
+        const i8 packed = quantize_pack_rgba8(rgba);
+        for (int l = 0; l < count; ++l) {
+            const size_t slot = size_t(first + l);
+            Rgba8 c;
+            std::memcpy(&c, reinterpret_cast<const char*>(&packed) + 4 * l, 4);
+            Rgba8* dst = color_ + pixel_[slot];
+            if constexpr (Samples == 1) {
+                *dst = c;
+            } else {
+                for (int s = 0; s < Samples; ++s)
+                    if (samples_[slot] & (1 << s)) dst[s] = c;
+            }
+        }
+    }
+
+    const S* shader_ = nullptr;
+    Rgba8* color_ = nullptr;
+    int count_ = 0;
+    bool front_facing_ = true;
+    // Not initialized: slots are written before they are read (lanes past the last fragment
+    // are read but replaced before use, see shade()).
+    alignas(32) std::array<float, kSlots> z_;
+    alignas(32) std::array<std::array<float, kSlots>, size_t(N)> var_;
+    alignas(32) std::array<int32_t, kSlots> pixel_;
+    alignas(32) std::array<int32_t, kSlots> samples_;
+};
+
+}  // namespace softraster

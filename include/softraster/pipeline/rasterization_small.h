@@ -1,0 +1,98 @@
+// Stage 7, rasterization, for small triangles: coverage of eight pixels at a time in 32-bit
+// integer lanes (Giesen, "Optimizing the basic rasterizer", 2013; llvmpipe does the same
+// with 32-bit steps inside a 64x64 tile).
+//
+// The edge functions of rasterization.h need 64 bits for a triangle anywhere in the guard
+// band. A triangle whose edges each span at most kSmallEdge (64 pixels) in x and in y needs
+// far fewer: at a point p the rasterizer visits (within the triangle's pixel bounds, or at most
+// eight pixels beyond them in an aligned group), E(p) = A (p.x - a.x) + B (p.y - a.y) with
+// |A|, |B| <= 2^14 and |p - a| < 2^14 + 2^12 per axis, so |E| < 2^30: it fits in an int32
+// lane. Each row is then a few vector additions per group of eight pixels, with no span
+// search and no per-pixel loop; most triangles of a detailed mesh are this small.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+
+#include "softraster/pipeline/rasterization.h"
+#include "softraster/pipeline/simd.h"
+
+namespace softraster {
+
+inline constexpr int64_t kSmallEdge = int64_t(64) * kSubpixelOne;
+inline constexpr int32_t kSubpixelOne32 = int32_t(kSubpixelOne);
+
+template <int N>
+inline bool has_small_edges(const TriangleSetup<N>& t) {
+    for (size_t i = 0; i < 3; ++i)
+        if (std::llabs(t.A[i]) > kSmallEdge || std::llabs(t.B[i]) > kSmallEdge) return false;
+    return true;
+}
+
+// Per-lane offsets, in 1/256 pixel from the center of a group's first pixel, of the points a
+// group covers: one sample per pixel, eight pixels; or with 4x MSAA four vectors in the
+// framebuffer's order (vector v: pixels 2v and 2v + 1, samples 0-3 of each).
+template <int Samples>
+struct GroupSamples;
+template <>
+struct GroupSamples<1> {
+    static constexpr int kVectors = 1;
+    static simd::i8 dx(int) { return simd::kLaneIndex * kSubpixelOne32; }
+    static simd::i8 dy(int) { return simd::i8{}; }
+    static simd::i8 pixel(int) { return simd::kLaneIndex; }
+};
+template <>
+struct GroupSamples<4> {
+    static constexpr int kVectors = 4;
+    static simd::i8 pixel(int v) { return 2 * v + (simd::kLaneIndex >> 2); }
+    static simd::i8 dx(int v) {
+        using P = SamplePattern<4>;
+        return pixel(v) * kSubpixelOne32 + simd::i8{P::x[0], P::x[1], P::x[2], P::x[3], P::x[0], P::x[1], P::x[2], P::x[3]} - 128;
+    }
+    static simd::i8 dy(int) {
+        using P = SamplePattern<4>;
+        return simd::i8{P::y[0], P::y[1], P::y[2], P::y[3], P::y[0], P::y[1], P::y[2], P::y[3]} - 128;
+    }
+};
+
+// Calls on_group(y, x, covered) for each group of eight pixels [x, x + 8) (x a multiple of
+// eight) in a row of t.bounds that covers any sample, `covered` holding a lane mask per
+// vector of GroupSamples<Samples>. Needs has_small_edges(t).
+template <int Samples, int N, class OnGroup>
+void rasterize_small(const TriangleSetup<N>& t, OnGroup&& on_group) {
+    using namespace simd;
+    using G = GroupSamples<Samples>;
+    constexpr int V = G::kVectors;
+    const Rect& r = t.bounds;
+    const int gx0 = r.x0 & ~(kLanes - 1);
+    // E + bias at each lane's point of the first group of the first row, and its steps
+    std::array<std::array<i8, 3>, V> row;
+    std::array<int32_t, 3> step_x, step_y;
+    for (size_t i = 0; i < 3; ++i) {
+        const auto e = int32_t(t.edge(int(i), int64_t(gx0) * kSubpixelOne32 + 128, int64_t(r.y0) * kSubpixelOne32 + 128) + t.bias[i]);
+        const auto a = int32_t(t.A[i]), b = int32_t(t.B[i]);
+        for (int v = 0; v < V; ++v) row[size_t(v)][i] = e + a * G::dx(v) + b * G::dy(v);
+        step_x[i] = a * kSubpixelOne32 * kLanes;
+        step_y[i] = b * kSubpixelOne32;
+    }
+    std::array<i8, V> in_x;  // lanes whose pixel lies in [r.x0, r.x1), for the current group
+    std::array<i8, V> covered;
+    for (int y = r.y0; y < r.y1; ++y) {
+        std::array<std::array<i8, 3>, V> e = row;
+        for (int x = gx0; x < r.x1; x += kLanes) {
+            i8 any_lane{};
+            for (size_t v = 0; v < size_t(V); ++v) {
+                const i8 px = G::pixel(int(v)) + x;
+                in_x[v] = (px >= r.x0) & (px < r.x1);
+                covered[v] = in_x[v] & ((e[v][0] | e[v][1] | e[v][2]) >= 0);
+                any_lane |= covered[v];
+                for (size_t i = 0; i < 3; ++i) e[v][i] += step_x[i];
+            }
+            if (any(any_lane)) on_group(y, x, covered);
+        }
+        for (auto& rv : row)
+            for (size_t i = 0; i < 3; ++i) rv[i] += step_y[i];
+    }
+}
+
+}  // namespace softraster
