@@ -89,7 +89,8 @@ llvmpipe's median frame time.
 - Date: {date}; {frames} timed frames after {warmup} warm-up frames; threads {threads}
 - Command: `scripts/bench-compare.py --report docs/performance.md` after
   `cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release && cmake --build build-release`
-- softraster: `softraster bench SCENE --threads T --json` (clear, every draw, MSAA resolve).
+- softraster: `softraster bench SCENE --threads T --json` (clear, every draw, and with MSAA the
+  resolve into a picture buffer; single-sampled, the framebuffer is the picture).
 - llvmpipe: `build-release/tests/glref SCENE --time` with `LP_NUM_THREADS=T` (clear, every
   draw, resolve, `glFinish`), one GLSL program per material (no branches on material state).
 
@@ -100,30 +101,40 @@ TAIL = """
 
 - Front end, in parallel over chunks: vertex shading (once per vertex, with the
   perspective divide, viewport mapping and snapping), then primitive assembly, clipping,
-  culling and binning into 64x64 tiles (`include/softraster/pipeline/binning.h`).
+  culling and binning into 64x64 tiles (`include/softraster/pipeline/binning.h`), which
+  also sums each tile's covered area (the overdraw estimate for hidden-surface removal).
 - Back end, one thread per tile, every draw in order: triangle setup with planes rebased
-  to the tile, span rasterization (an exact pixel span per row from the edge functions),
-  early depth test, the shader specialized at compile time for its model, texture and
-  vertex colors, 8-bit fixed-point blending.
+  to the tile (the vertices of triangles a few places ahead are prefetched: a tile revisits
+  every draw's vertex buffer), rasterization in groups of eight pixels aligned to multiples
+  of eight (whole-vector loads and stores; a group never straddles two tiles), the early
+  depth test, then shading specialized at compile time for the model, texture and vertex
+  colors, and 8-bit fixed-point blending.
+- Small triangles of opaque draws go through the fragment queue
+  (`include/softraster/pipeline/fragment_queue.h`): depth is tested and written at once,
+  and the fragments that pass wait to be shaded eight at a time whatever triangle they
+  came from, so a one-pixel triangle no longer pays for eight lanes of shading. With 4x
+  MSAA, small triangles are covered eight pixels (32 samples) at a time in 32-bit lanes
+  (`rasterization_small.h`).
+- Stacks of opaque draws (bench_fill) are drawn in two passes per tile: visibility, then
+  shading of the last writer of each pixel only (`hidden_surface_removal.h`).
 
 Microbenchmarks (Google Benchmark) of setup, traversal, shading and resolve:
 `build-release/bench/micro_benchmarks` (built when libbenchmark-dev is installed).
 
 ## Where the rest of the gap is
 
-softraster is faster than llvmpipe on every scene at both thread counts; the target (half of
-llvmpipe's time) is not yet met everywhere. What the profiles point at next:
+What the profiles (`perf record` on `softraster bench`) point at next:
 
-- Triangle-heavy scenes (bench_highpoly*, bench_many_objects, bench_msaa at 1 thread): per
-  triangle work dominates — setup computes double-precision planes for every varying, and
-  every small triangle runs the span walk. Next: set up in SIMD across triangles, and a
-  small-triangle path that skips planes for triangles that cover one or two pixels.
-- bench_msaa: the 4x path shades scalar; the eight-lane path is single-sampled only.
-- bench_fill: hidden-surface removal cut shading 16x; the visibility pass re-walks every
-  layer. A coarse per-tile depth bound (reject a triangle whose nearest depth is behind the
-  tile's farthest stored depth) would skip most of it.
-- bench_blend: eight-lane shading and 8-bit blending; llvmpipe's JIT fuses the whole
-  fragment pipeline per quad. Next: keep color in the tile in a planar layout across draws.
+- Triangle-heavy scenes at 1 thread (bench_highpoly*, bench_many_objects): triangle setup
+  (about 26 ns per triangle and tile, double-precision planes for depth, 1/w and every
+  varying) and the front end (vertex shading, binning: a quarter of the frame) dominate.
+  Next: set up once per triangle in the front end, in parallel, instead of once per tile;
+  a smaller post-transform vertex (the varyings are stored twice).
+- bench_fill: the visibility pass walks every layer. A coarse per-tile depth bound (skip
+  a triangle whose nearest depth is behind the tile's farthest stored depth) would skip
+  the hidden layers when they are drawn front to back.
+- bench_blend: eight-lane shading and 8-bit blending per layer; keeping the tile's color
+  in registers or a planar layout across draws would save the unpacking per layer.
 """
 
 if __name__ == '__main__':

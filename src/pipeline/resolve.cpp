@@ -2,23 +2,24 @@
 // Each channel of a pixel is floor(mean + 0.5) of its stored 8-bit samples.
 #include <algorithm>
 
-#include "softraster/framebuffer.h"
+#include "softraster/pipeline/resolve.h"
 
 namespace softraster {
 
-Image Framebuffer::read_pixels() const {
-    Image img(width_, height_);
-    if (samples_ == 1) {  // nothing to average
-        std::copy(color_.begin(), color_.end(), img.pixels.begin());
-        return img;
+void resolve(const Framebuffer& fb, Image& img) {
+    if (img.width != fb.width() || img.height != fb.height()) img = Image(fb.width(), fb.height());
+    const size_t pixels = img.pixels.size();
+    if (fb.samples() == 1) {  // nothing to average
+        std::copy(fb.color_data(), fb.color_data() + pixels, img.pixels.begin());
+        return;
     }
     // 4x: average each channel of the four samples, floor(mean + 0.5) = (sum + 2) >> 2. The
     // four RGBA8 samples are four 32-bit words; channels 0 and 2, and 1 and 3, are summed two
     // at a time in 16-bit lanes (SIMD within a register).
-    const auto* words = reinterpret_cast<const uint32_t*>(color_.data());
+    const auto* words = reinterpret_cast<const uint32_t*>(fb.color_data());
     auto* out = reinterpret_cast<uint32_t*>(img.pixels.data());
     static_assert(sizeof(Rgba8) == 4);
-    for (size_t p = 0; p < img.pixels.size(); ++p) {
+    for (size_t p = 0; p < pixels; ++p) {
         const uint32_t* s = words + 4 * p;
         uint32_t even = 0x00020002u, odd = 0x00020002u;  // + 2 for rounding
         for (int i = 0; i < 4; ++i) {
@@ -27,6 +28,11 @@ Image Framebuffer::read_pixels() const {
         }
         out[p] = ((even >> 2) & 0x00ff00ffu) | (((odd >> 2) & 0x00ff00ffu) << 8);
     }
+}
+
+Image Framebuffer::read_pixels() const {
+    Image img;
+    resolve(*this, img);
     return img;
 }
 
