@@ -1,5 +1,6 @@
 // Shared helpers for the unit tests: tiny shaders that take clip-space positions directly.
 #pragma once
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -89,6 +90,71 @@ void draw(Context& ctx, const S& shader, const std::vector<typename S::Vertex>& 
           Topology t = Topology::Triangles) {
     ctx.draw(t, shader, std::span<const typename S::Vertex>(v), std::span<const uint32_t>(idx));
     ctx.finish();
+}
+
+
+// A vertex-color shader that a test marks pure (kPure: never discards, no side effects) or
+// not, to compare the paths only pure shaders take (hidden-surface removal, the fragment
+// queue) with the plain one. It shades one or eight fragments; back faces flip blue.
+struct RgbVertex {
+    glm::vec4 clip;
+    glm::vec3 color;
+};
+struct RgbVaryings {
+    float r, g, b;
+};
+template <bool Pure>
+struct RgbShader {
+    using Vertex = RgbVertex;
+    using Varyings = RgbVaryings;
+    static constexpr bool kPure = Pure;
+    glm::vec4 vertex(const Vertex& in, Varyings& out) const {
+        out = {in.color.r, in.color.g, in.color.b};
+        return in.clip;
+    }
+    bool fragment(const Varyings& v, const FragCoord& f, glm::vec4& c) const {
+        c = glm::vec4(v.r, v.g, f.front_facing ? v.b : 1.0f - v.b, 1.0f);
+        return true;
+    }
+    void fragment_batch(const std::array<simd::f8, 3>& v, simd::f8, bool front_facing, std::array<simd::f8, 4>& c) const {
+        c = {v[0], v[1], front_facing ? v[2] : 1.0f - v[2], simd::splat(1.0f)};
+    }
+};
+
+struct RgbMesh {
+    std::vector<RgbVertex> vertices;
+    std::vector<uint32_t> indices;
+};
+
+// Depth functions (with a clear depth that lets something pass) that keep the nearer, the
+// farther, ties, or everything.
+struct DepthCase {
+    DepthFunc func;
+    float clear;
+};
+inline const std::array<DepthCase, 4> kDepthCases = {
+    {{DepthFunc::Less, 1.0f}, {DepthFunc::LessEqual, 1.0f}, {DepthFunc::Greater, 0.0f}, {DepthFunc::Always, 1.0f}}};
+
+// Every sample's color and depth after drawing `meshes` in order (two threads, no culling).
+struct SamplePicture {
+    std::vector<Rgba8> color;
+    std::vector<float> depth;
+    uint64_t shaded = 0;  // fragments shaded
+};
+template <bool Pure>
+SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase depth, const std::vector<RgbMesh>& meshes) {
+    Framebuffer fb(width, height, samples);
+    WorkerPool pool(2);
+    Context ctx(fb, &pool);
+    ctx.clear(glm::vec4(0, 0, 0, 1), depth.clear);
+    ctx.state.cull = CullMode::None;
+    ctx.state.depth_func = depth.func;
+    for (const RgbMesh& m : meshes)
+        ctx.draw(Topology::Triangles, RgbShader<Pure>{}, std::span<const RgbVertex>(m.vertices), std::span<const uint32_t>(m.indices));
+    ctx.execute();
+    const size_t n = size_t(width) * size_t(height) * size_t(samples);
+    return {std::vector<Rgba8>(fb.color_data(), fb.color_data() + n), std::vector<float>(fb.depth_data(), fb.depth_data() + n),
+            ctx.fragments_shaded()};
 }
 
 }  // namespace softraster::test

@@ -15,77 +15,37 @@ using namespace softraster::test;
 
 namespace {
 
-struct RgbVaryings {
-    float r, g, b;
-};
-struct RgbVertex {
-    glm::vec4 clip;
-    glm::vec3 color;
-};
+constexpr int W = 203, H = 141;  // not a multiple of 8 or 64
 
-template <bool Pure>
-struct RgbShader {
-    using Vertex = RgbVertex;
-    using Varyings = RgbVaryings;
-    static constexpr bool kPure = Pure;
-    glm::vec4 vertex(const Vertex& in, Varyings& out) const {
-        out = {in.color.r, in.color.g, in.color.b};
-        return in.clip;
-    }
-    bool fragment(const Varyings& v, const FragCoord& f, glm::vec4& c) const {
-        c = glm::vec4(v.r, v.g, f.front_facing ? v.b : 1.0f - v.b, 1.0f);
-        return true;
-    }
-    void fragment_batch(const std::array<simd::f8, 3>& v, simd::f8, bool front_facing, std::array<simd::f8, 4>& c) const {
-        c = {v[0], v[1], front_facing ? v[2] : 1.0f - v[2], simd::splat(1.0f)};
-    }
-};
-
-template <bool Pure>
-std::pair<std::vector<Rgba8>, std::vector<float>> render(int samples, DepthFunc func, float clear_depth, uint64_t& shaded) {
-    constexpr int W = 203, H = 141;  // not a multiple of 8 or 64
-    Framebuffer fb(W, H, samples);
-    WorkerPool pool(2);
-    Context ctx(fb, &pool);
-    ctx.clear(glm::vec4(0, 0, 0, 1), clear_depth);
-    ctx.state.cull = CullMode::None;
-    ctx.state.depth_func = func;
+// One draw of 6000 triangles, mostly a few pixels big and clustered (so that a group of
+// eight queued fragments often hits one pixel twice), some bigger ones, both facings.
+RgbMesh tiny_triangles() {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0, 1);
-    std::vector<RgbVertex> v;
-    std::vector<uint32_t> idx;
-    for (int k = 0; k < 6000; ++k) {  // clustered, so that a group of eight often hits one pixel twice
+    RgbMesh m;
+    for (int k = 0; k < 6000; ++k) {
         const float cx = 20 + u(rng) * (W - 10), cy = u(rng) * H, size = k % 7 == 0 ? 40.0f : 0.5f + 4 * u(rng), z = u(rng);
         for (int c = 0; c < 3; ++c) {
-            idx.push_back(uint32_t(v.size()));
-            v.push_back({window_to_clip(cx + size * (u(rng) - 0.5f), cy + size * (u(rng) - 0.5f), W, H, z + 0.1f * u(rng), 1 + u(rng)),
-                         glm::vec3(u(rng), u(rng), u(rng))});
+            m.indices.push_back(uint32_t(m.vertices.size()));
+            m.vertices.push_back({window_to_clip(cx + size * (u(rng) - 0.5f), cy + size * (u(rng) - 0.5f), W, H, z + 0.1f * u(rng), 1 + u(rng)),
+                                  glm::vec3(u(rng), u(rng), u(rng))});
         }
     }
-    ctx.draw(Topology::Triangles, RgbShader<Pure>{}, std::span<const RgbVertex>(v), std::span<const uint32_t>(idx));
-    ctx.execute();
-    shaded = ctx.fragments_shaded();
-    const size_t n = size_t(W) * H * size_t(samples);
-    return {std::vector<Rgba8>(fb.color_data(), fb.color_data() + n), std::vector<float>(fb.depth_data(), fb.depth_data() + n)};
+    return m;
 }
 
 }  // namespace
 
 TEST(FragmentQueue, SamePictureAsShadingEachTriangle) {
-    struct Case {
-        DepthFunc f;
-        float clear;
-    };
+    const std::vector<RgbMesh> meshes = {tiny_triangles()};
     for (int samples : {1, 4})
-        for (Case c : {Case{DepthFunc::Less, 1.0f}, Case{DepthFunc::LessEqual, 1.0f}, Case{DepthFunc::Greater, 0.0f},
-                       Case{DepthFunc::Always, 1.0f}}) {
-            uint64_t shaded_queued = 0, shaded_plain = 0;
-            const auto queued = render<true>(samples, c.f, c.clear, shaded_queued);
-            const auto plain = render<false>(samples, c.f, c.clear, shaded_plain);
-            EXPECT_TRUE(queued.first == plain.first) << "color differs, samples " << samples << " func " << int(c.f);
-            EXPECT_TRUE(queued.second == plain.second) << "depth differs, samples " << samples << " func " << int(c.f);
-            EXPECT_EQ(shaded_queued, shaded_plain);
-            EXPECT_GT(shaded_queued, 10000u);
+        for (DepthCase c : kDepthCases) {
+            const SamplePicture queued = draw_rgb_meshes<true>(W, H, samples, c, meshes);
+            const SamplePicture plain = draw_rgb_meshes<false>(W, H, samples, c, meshes);
+            EXPECT_TRUE(queued.color == plain.color) << "color differs, samples " << samples << " func " << int(c.func);
+            EXPECT_TRUE(queued.depth == plain.depth) << "depth differs, samples " << samples << " func " << int(c.func);
+            EXPECT_EQ(queued.shaded, plain.shaded);
+            EXPECT_GT(queued.shaded, 10000u);
         }
 }
 
