@@ -164,7 +164,7 @@ private:
                     int32_t* owner = reinterpret_cast<int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
                     const f8 j = splat(float(y - setup.origin_y));
                     for_each_group(x_begin, x_end, [&](int x, i8 pass) {
-                        const f8 z = setup.z.a0 + setup.z.dadx * (to_float(kLaneIndex) + float(x - setup.origin_x)) + setup.z.dady * j;
+                        const f8 z = interpolate_depth(setup, to_float(kLaneIndex) + float(x - setup.origin_x), j);
                         const f8 stored = load_group<f8>(depth, x, width);
                         pass &= depth_passes(state_.depth_func, z, stored);
                         store_group(depth, x, width, select(pass, z, stored));
@@ -204,12 +204,8 @@ private:
                         const i8 mine = lanes & (load_group<i8>(owner, x - rect.x0, width - rect.x0) == int32_t(me));
                         if (!any(mine)) return;
                         const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
-                        const f8 w = 1.0f / (setup.inv_w.a0 + setup.inv_w.dadx * i + setup.inv_w.dady * j);
-                        std::array<f8, N> var;
-                        for (size_t k = 0; k < size_t(N); ++k)
-                            var[k] = (setup.var_w[k].a0 + setup.var_w[k].dadx * i + setup.var_w[k].dady * j) * w;
                         std::array<f8, 4> rgba;
-                        shader_.fragment_batch(var, setup.z.a0 + setup.z.dadx * i + setup.z.dady * j, setup.front_facing, rgba);
+                        shader_.fragment_batch(interpolate_perspective(setup, i, j), interpolate_depth(setup, i, j), setup.front_facing, rgba);
                         shaded += unsigned(__builtin_popcount(bits(mine)));
                         blend_group<BlendMode::Opaque>(color, x, width, mine, rgba);
                     });

@@ -64,7 +64,6 @@ template <BlendMode B, BatchShader S>
 uint64_t draw_triangle_batched(const S& shader, const RenderState& st, Framebuffer& fb,
                                const TriangleSetup<kVaryingCount<typename S::Varyings>>& t) {
     using namespace simd;
-    constexpr int N = kVaryingCount<typename S::Varyings>;
     uint64_t shaded = 0;
     rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
         const f8 j = splat(float(y - t.origin_y));
@@ -73,18 +72,15 @@ uint64_t draw_triangle_batched(const S& shader, const RenderState& st, Framebuff
         const int width = fb.width();
         for_each_group(x_begin, x_end, [&](int x, i8 pass) {
             const f8 i = to_float(kLaneIndex) + float(x - t.origin_x);
-            const f8 z = t.z.a0 + t.z.dadx * i + t.z.dady * j;
+            const f8 z = interpolate_depth(t, i, j);
             f8 stored{};
             if (st.depth_test) {
                 stored = load_group<f8>(depth, x, width);
                 pass &= depth_passes(st.depth_func, z, stored);
             }
             if (!any(pass)) return;
-            const f8 w = 1.0f / (t.inv_w.a0 + t.inv_w.dadx * i + t.inv_w.dady * j);
-            std::array<f8, N> var;
-            for (size_t k = 0; k < size_t(N); ++k) var[k] = (t.var_w[k].a0 + t.var_w[k].dadx * i + t.var_w[k].dady * j) * w;
             std::array<f8, 4> rgba;
-            shader.fragment_batch(var, z, t.front_facing, rgba);
+            shader.fragment_batch(interpolate_perspective(t, i, j), z, t.front_facing, rgba);
             shaded += unsigned(__builtin_popcount(bits(pass)));
             if (st.depth_test && st.depth_write) store_group(depth, x, width, select(pass, z, stored));
             if (st.color_write) blend_group<B>(color, x, width, pass, rgba);
@@ -103,25 +99,21 @@ template <int Samples, BatchShader S>
 uint64_t queue_triangle(const RenderState& st, Framebuffer& fb, const TriangleSetup<kVaryingCount<typename S::Varyings>>& t,
                         FragmentQueue<S, Samples>& queue) {
     using namespace simd;
-    constexpr int N = kVaryingCount<typename S::Varyings>;
     const int width = fb.width();
     uint64_t queued = 0;
     // Queues the pixels of group [x, x + 8) of row y set in `pass`, writing `samples` of each.
     auto queue_group = [&](int y, int x, i8 pass, i8 samples) {
         const f8 i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
-        const f8 w = 1.0f / (t.inv_w.a0 + t.inv_w.dadx * i + t.inv_w.dady * j);
-        std::array<f8, N> var;
-        for (size_t k = 0; k < size_t(N); ++k) var[k] = (t.var_w[k].a0 + t.var_w[k].dadx * i + t.var_w[k].dady * j) * w;
         queued += unsigned(__builtin_popcount(bits(pass)));
         const i8 pixel = (splat_i(int32_t(fb.sample_index(0, y))) + (kLaneIndex + x) * Samples);
-        queue.push(pass, t.z.a0 + t.z.dadx * i + t.z.dady * j, var, pixel, samples, t.front_facing);
+        queue.push(pass, interpolate_depth(t, i, j), interpolate_perspective(t, i, j), pixel, samples, t.front_facing);
     };
     if constexpr (Samples == 1) {
         // Depth test of the covered pixels of group [x, x + 8) of row y, then queueing.
         auto test_group = [&](int y, int x, i8 pass) {
             if (st.depth_test) {
                 float* depth = fb.depth_data() + fb.sample_index(0, y);
-                const f8 z = t.z.a0 + t.z.dadx * (to_float(kLaneIndex) + float(x - t.origin_x)) + t.z.dady * float(y - t.origin_y);
+                const f8 z = interpolate_depth(t, to_float(kLaneIndex) + float(x - t.origin_x), splat(float(y - t.origin_y)));
                 const f8 stored = load_group<f8>(depth, x, width);
                 pass &= depth_passes(st.depth_func, z, stored);
                 if (!any(pass)) return;
@@ -146,7 +138,7 @@ uint64_t queue_triangle(const RenderState& st, Framebuffer& fb, const TriangleSe
                     // at each sample: the pixel's offset from the origin plus the sample's (exact)
                     const f8 i = to_float(G::pixel(v) + (x - t.origin_x)) + to_float(G::dx(v) - G::pixel(v) * kSubpixelOne32) * (1.0f / 256.0f);
                     const f8 j = float(y - t.origin_y) + to_float(G::dy(v)) * (1.0f / 256.0f);
-                    const f8 z = t.z.a0 + t.z.dadx * i + t.z.dady * j;
+                    const f8 z = interpolate_depth(t, i, j);
                     const int at = (x + 2 * v) * Samples, row_width = width * Samples;
                     const f8 stored = load_group<f8>(depth, at, row_width);
                     pass &= depth_passes(st.depth_func, z, stored);

@@ -11,15 +11,16 @@
 
 namespace softraster {
 
-template <int N>
-inline float interpolate_depth(const TriangleSetup<N>& t, float i, float j) {
+// (i, j) as float for one point, or as simd::f8 for eight: the same arithmetic, lane by lane.
+template <int N, class T>
+inline T interpolate_depth(const TriangleSetup<N>& t, T i, T j) {
     return t.z.at(i, j);
 }
 
-template <int N>
-inline std::array<float, N> interpolate_perspective(const TriangleSetup<N>& t, float i, float j) {
-    const float w = 1.0f / t.inv_w.at(i, j);
-    std::array<float, N> out;
+template <int N, class T>
+inline std::array<T, N> interpolate_perspective(const TriangleSetup<N>& t, T i, T j) {
+    const T w = 1.0f / t.inv_w.at(i, j);
+    std::array<T, N> out;
     for (size_t k = 0; k < size_t(N); ++k) out[k] = t.var_w[k].at(i, j) * w;
     return out;
 }

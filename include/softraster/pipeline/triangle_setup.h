@@ -41,7 +41,9 @@ struct Rect {
 // An attribute's plane, relative to the center of the rectangle's first pixel (i, j = 0).
 struct Plane {
     float a0 = 0, dadx = 0, dady = 0;
-    float at(float i, float j) const { return a0 + dadx * i + dady * j; }
+    // at one pixel (float) or at eight (simd::f8), the same arithmetic either way
+    template <class T>
+    T at(T i, T j) const { return a0 + dadx * i + dady * j; }
 };
 
 // Twice the signed area of the snapped triangle: > 0 when it turns clockwise on screen.
