@@ -8,6 +8,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <vector>
 
@@ -55,8 +56,11 @@ public:
     uint64_t draw_tile(int, const Rect& r, const Target& t) override {
         Framebuffer& fb = *t.fb;
         const size_t n = size_t(r.x1 - r.x0) * size_t(fb.samples());
+        static_assert(sizeof(Rgba8) == sizeof(uint32_t));
+        uint32_t color;  // filled as 32-bit words, which vectorizes (four bytes do not)
+        std::memcpy(&color, &color_, sizeof color);
         for (int y = r.y0; y < r.y1; ++y) {
-            std::fill_n(fb.color_data() + fb.sample_index(r.x0, y), n, color_);
+            std::fill_n(reinterpret_cast<uint32_t*>(fb.color_data() + fb.sample_index(r.x0, y)), n, color);
             std::fill_n(fb.depth_data() + fb.sample_index(r.x0, y), n, depth_);
         }
         return 0;
@@ -293,8 +297,8 @@ private:
         auto prefetch = [&](const TriangleBin<N>& bin, const TriangleRef& r) {
             for (uint32_t i : r.v) {
                 const ShadedVertex<N>& v = bin.vertex(i, post_.data());
-                __builtin_prefetch(&v.window);
-                __builtin_prefetch(reinterpret_cast<const char*>(&v.Y) + sizeof v.Y - 1);
+                __builtin_prefetch(&v);  // at most two cache lines
+                __builtin_prefetch(reinterpret_cast<const char*>(&v + 1) - 1);
             }
         };
         for (const TriangleBin<N>& bin : bins_)

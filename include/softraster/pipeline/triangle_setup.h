@@ -101,9 +101,9 @@ bool setup_triangle(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const 
 
     // Plane gradients by Cramer's rule on the two edge vectors from vertex 0, in double,
     // then each plane's value at the center of the rectangle's first pixel.
-    const WindowVertex<N>& w0 = v[0]->window;
-    const WindowVertex<N>& w1 = v[1]->window;
-    const WindowVertex<N>& w2 = v[2]->window;
+    const WindowPosition& w0 = v[0]->window;
+    const WindowPosition& w1 = v[1]->window;
+    const WindowPosition& w2 = v[2]->window;
     const double x1 = double(w1.x) - w0.x, y1 = double(w1.y) - w0.y;
     const double x2 = double(w2.x) - w0.x, y2 = double(w2.y) - w0.y;
     const double det = x1 * y2 - x2 * y1;
@@ -119,7 +119,8 @@ bool setup_triangle(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const 
     t.z = plane(w0.z, w1.z, w2.z);
     t.inv_w = plane(w0.inv_w, w1.inv_w, w2.inv_w);
     for (size_t k = 0; k < size_t(N); ++k)
-        t.var_w[k] = plane(double(w0.var[k]) * w0.inv_w, double(w1.var[k]) * w1.inv_w, double(w2.var[k]) * w2.inv_w);
+        t.var_w[k] = plane(double(v[0]->clip.var[k]) * w0.inv_w, double(v[1]->clip.var[k]) * w1.inv_w,
+                            double(v[2]->clip.var[k]) * w2.inv_w);
     return true;
 }
 

@@ -15,10 +15,15 @@
 
 namespace softraster {
 
-template <int N>
-struct WindowVertex {
+struct WindowPosition {
     float x = 0, y = 0, z = 0;  // window coordinates, pixels (y down) and depth
     float inv_w = 1;            // 1 / clip.w
+};
+
+// A window position with its varyings (lines and points; a triangle's vertices keep their
+// varyings once, in ClipVertex, see vertex_processing.h).
+template <int N>
+struct WindowVertex : WindowPosition {
     std::array<float, N> var{};
 };
 
@@ -34,16 +39,20 @@ inline int64_t snap_to_subpixel(float v) { return int64_t(std::lrint(double(v) *
 
 // Returns false for a vertex that cannot be mapped (w <= 0 or a non-finite result); after
 // clipping this only happens with degenerate user matrices, and the primitive is dropped.
+inline bool to_window(const glm::vec4& clip, const Viewport& vp, WindowPosition& out) {
+    if (!(clip.w > 0.0f)) return false;
+    const float inv_w = 1.0f / clip.w;
+    out.x = (clip.x * inv_w + 1.0f) * 0.5f * float(vp.width);
+    out.y = (1.0f - clip.y * inv_w) * 0.5f * float(vp.height);
+    out.z = (clip.z * inv_w + 1.0f) * 0.5f;
+    out.inv_w = inv_w;
+    return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z) && std::isfinite(inv_w);
+}
+
 template <int N>
 bool to_window(const ClipVertex<N>& c, const Viewport& vp, WindowVertex<N>& out) {
-    if (!(c.position.w > 0.0f)) return false;
-    const float inv_w = 1.0f / c.position.w;
-    out.x = (c.position.x * inv_w + 1.0f) * 0.5f * float(vp.width);
-    out.y = (1.0f - c.position.y * inv_w) * 0.5f * float(vp.height);
-    out.z = (c.position.z * inv_w + 1.0f) * 0.5f;
-    out.inv_w = inv_w;
     out.var = c.var;
-    return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z) && std::isfinite(inv_w);
+    return to_window(c.position, vp, static_cast<WindowPosition&>(out));
 }
 
 }  // namespace softraster
