@@ -260,12 +260,13 @@ private:
                 // sit among the tile loop's spilled registers.
                 static thread_local FragmentQueue<S, Samples> queue;
                 queue.start(shader_, *t.fb);
-                for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+                for_each_setup</*planes=*/false>(tile, rect, [&](TriangleSetup<N>& setup, uint32_t) {
                     if (Samples == 1 && is_large(setup.bounds)) {  // its groups are full anyway
                         queue.flush();
+                        setup_planes(setup);
                         shaded += draw_triangle_batched<B>(shader_, state_, *t.fb, setup);
                     } else {
-                        shaded += queue_triangle<Samples>(state_, *t.fb, setup, queue);
+                        shaded += queue_triangle<Samples>(state_, *t.fb, setup, queue);  // makes the planes if needed
                     }
                 });
                 queue.flush();
@@ -286,7 +287,8 @@ private:
 
     // Calls f(setup, ordinal) for each of the tile's triangles in draw order; the ordinal
     // counts the tile's triangles of this draw (the owner id of hidden-surface removal).
-    template <class F>
+    // Without Planes, the setup has its coverage only (f makes the planes when it needs them).
+    template <bool Planes = true, class F>
     void for_each_setup(int tile, const Rect& rect, F&& f) const {
         TriangleSetup<N> setup;
         uint32_t ordinal = 0;
@@ -307,9 +309,11 @@ private:
                     for (uint32_t a = k + 1; a < std::min(end, k + kAhead); ++a) prefetch(bin, bin.refs[a]);
                 if (k + kAhead < end) prefetch(bin, bin.refs[k + kAhead]);
                 const TriangleRef& r = bin.refs[k];
-                if (setup_triangle(bin.vertex(r.v[0], post_.data()), bin.vertex(r.v[1], post_.data()),
-                                   bin.vertex(r.v[2], post_.data()), state_.front_face, rect, setup))
+                if (setup_coverage(bin.vertex(r.v[0], post_.data()), bin.vertex(r.v[1], post_.data()),
+                                   bin.vertex(r.v[2], post_.data()), state_.front_face, rect, setup)) {
+                    if constexpr (Planes) setup_planes(setup);
                     f(setup, ordinal);
+                }
             }
     }
     S shader_;

@@ -96,11 +96,16 @@ uint64_t draw_triangle_batched(const S& shader, const RenderState& st, Framebuff
 // that pass; returns the number queued. For draws the queue allows (opaque, pure shader,
 // color writes on). Small triangles are covered eight pixels at a time (rasterization_small.h).
 template <int Samples, BatchShader S>
-uint64_t queue_triangle(const RenderState& st, Framebuffer& fb, const TriangleSetup<kVaryingCount<typename S::Varyings>>& t,
+uint64_t queue_triangle(const RenderState& st, Framebuffer& fb, TriangleSetup<kVaryingCount<typename S::Varyings>>& t,
                         FragmentQueue<S, Samples>& queue) {
     using namespace simd;
     const int width = fb.width();
     uint64_t queued = 0;
+    // The triangle may come with its coverage only: its planes are made at its first covered
+    // group, so a triangle that covers no sample costs no more than its edge functions.
+    auto need_planes = [&] {
+        if (!t.has_planes) setup_planes(t);
+    };
     // Queues the pixels of group [x, x + 8) of row y set in `pass`, writing `samples` of each.
     auto queue_group = [&](int y, int x, i8 pass, i8 samples) {
         const f8 i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
@@ -111,6 +116,7 @@ uint64_t queue_triangle(const RenderState& st, Framebuffer& fb, const TriangleSe
     if constexpr (Samples == 1) {
         // Depth test of the covered pixels of group [x, x + 8) of row y, then queueing.
         auto test_group = [&](int y, int x, i8 pass) {
+            need_planes();
             if (st.depth_test) {
                 float* depth = fb.depth_data() + fb.sample_index(0, y);
                 const f8 z = interpolate_depth(t, to_float(kLaneIndex) + float(x - t.origin_x), splat(float(y - t.origin_y)));
@@ -130,6 +136,7 @@ uint64_t queue_triangle(const RenderState& st, Framebuffer& fb, const TriangleSe
         // at each sample, tested and written, then a mask of passing samples per pixel.
         using G = GroupSamples<Samples>;
         rasterize_small<Samples>(t, [&](int y, int x, const std::array<i8, G::kVectors>& covered) {
+            need_planes();
             float* depth = fb.depth_data() + fb.sample_index(0, y);
             uint32_t passed = 0;  // 4 bits per pixel
             for (int v = 0; v < G::kVectors; ++v) {
@@ -151,6 +158,7 @@ uint64_t queue_triangle(const RenderState& st, Framebuffer& fb, const TriangleSe
             queue_group(y, x, samples != 0, samples);
         });
     } else {
+        need_planes();  // (this rasterizer interpolates depth itself)
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
             const size_t base = fb.sample_index(px.x, px.y);
             float* depth = fb.depth_data() + base;

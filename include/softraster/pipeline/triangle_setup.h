@@ -65,52 +65,62 @@ struct TriangleSetup {
     std::array<int64_t, 3> bias;     // 0 on top-left edges, -1 elsewhere: inside iff E_i + bias_i >= 0
     Rect bounds;                     // pixels to visit: the triangle's bounds within the tile
     int origin_x = 0, origin_y = 0;  // the pixel the planes are relative to
-    Plane z;                         // window depth
-    Plane inv_w;                     // 1/w
-    std::array<Plane, N> var_w;      // varying / w
     bool front_facing = true;
+    std::array<const ShadedVertex<N>*, 3> corner{};  // clockwise on screen
+    // Interpolation planes, made by setup_planes. A draw may make them only once the triangle
+    // is known to cover a sample: in a million-triangle mesh many triangles cover none.
+    bool has_planes = false;
+    Plane z;                     // window depth
+    Plane inv_w;                 // 1/w
+    std::array<Plane, N> var_w;  // varying / w
 
     int64_t edge(int i, int64_t px, int64_t py) const {
         return A[size_t(i)] * px + B[size_t(i)] * py + C[size_t(i)];
     }
 };
 
-// Sets up triangle (v0, v1, v2), already culled and known to have non-zero snapped area,
-// for drawing inside `rect`. Returns false if it does not touch `rect`.
+// Sets up the coverage of triangle (v0, v1, v2), already culled and known to have non-zero
+// snapped area, for drawing inside `rect`: edge functions, fill-rule bias, bounds and facing.
+// Returns false if it does not touch `rect`.
 template <int N>
-bool setup_triangle(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const ShadedVertex<N>& v2,
+bool setup_coverage(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const ShadedVertex<N>& v2,
                     FrontFace front, const Rect& rect, TriangleSetup<N>& t) {
-    const ShadedVertex<N>* v[3] = {&v0, &v1, &v2};
     const Rect b = pixel_bounds(v0, v1, v2);
     t.bounds = {std::max(rect.x0, b.x0), std::max(rect.y0, b.y0), std::min(rect.x1, b.x1), std::min(rect.y1, b.y1)};
     if (t.bounds.x0 >= t.bounds.x1 || t.bounds.y0 >= t.bounds.y1) return false;
     const int64_t area2 = signed_area2(v0.X, v0.Y, v1.X, v1.Y, v2.X, v2.Y);
     t.front_facing = is_front_facing(/*ccw_on_screen=*/area2 < 0, front);
-    if (area2 < 0) std::swap(v[1], v[2]);  // make it clockwise on screen, so that E >= 0 inside
+    t.corner = {&v0, &v1, &v2};
+    if (area2 < 0) std::swap(t.corner[1], t.corner[2]);  // make it clockwise on screen, so that E >= 0 inside
+    t.origin_x = rect.x0;
+    t.origin_y = rect.y0;
+    t.has_planes = false;
 
-    for (int i = 0; i < 3; ++i) {
-        const ShadedVertex<N>& a = *v[(i + 1) % 3];
-        const ShadedVertex<N>& c = *v[(i + 2) % 3];  // edge a -> c is opposite vertex i
+    for (size_t i = 0; i < 3; ++i) {
+        const ShadedVertex<N>& a = *t.corner[(i + 1) % 3];
+        const ShadedVertex<N>& c = *t.corner[(i + 2) % 3];  // edge a -> c is opposite vertex i
         const int64_t dx = int64_t(c.X) - a.X, dy = int64_t(c.Y) - a.Y;
-        t.A[size_t(i)] = -dy;
-        t.B[size_t(i)] = dx;
-        t.C[size_t(i)] = dy * a.X - dx * a.Y;
+        t.A[i] = -dy;
+        t.B[i] = dx;
+        t.C[i] = dy * a.X - dx * a.Y;
         const bool top_left = dy < 0 || (dy == 0 && dx > 0);
-        t.bias[size_t(i)] = top_left ? 0 : -1;
+        t.bias[i] = top_left ? 0 : -1;
     }
+    return true;
+}
 
+// Makes the interpolation planes of a triangle whose coverage is set up.
+template <int N>
+void setup_planes(TriangleSetup<N>& t) {
     // Plane gradients by Cramer's rule on the two edge vectors from vertex 0, in double,
     // then each plane's value at the center of the rectangle's first pixel.
-    const WindowPosition& w0 = v[0]->window;
-    const WindowPosition& w1 = v[1]->window;
-    const WindowPosition& w2 = v[2]->window;
+    const ShadedVertex<N>&v0 = *t.corner[0], &v1 = *t.corner[1], &v2 = *t.corner[2];
+    const WindowPosition &w0 = v0.window, &w1 = v1.window, &w2 = v2.window;
     const double x1 = double(w1.x) - w0.x, y1 = double(w1.y) - w0.y;
     const double x2 = double(w2.x) - w0.x, y2 = double(w2.y) - w0.y;
     const double det = x1 * y2 - x2 * y1;
     const double inv_det = det != 0.0 ? 1.0 / det : 0.0;  // unsnapped sliver: flat planes
-    t.origin_x = rect.x0;
-    t.origin_y = rect.y0;
-    const double ox = rect.x0 + 0.5 - w0.x, oy = rect.y0 + 0.5 - w0.y;
+    const double ox = t.origin_x + 0.5 - w0.x, oy = t.origin_y + 0.5 - w0.y;
     auto plane = [&](double a0, double a1, double a2) {
         const double d1 = a1 - a0, d2 = a2 - a0;
         const double dadx = (d1 * y2 - d2 * y1) * inv_det, dady = (d2 * x1 - d1 * x2) * inv_det;
@@ -119,8 +129,17 @@ bool setup_triangle(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const 
     t.z = plane(w0.z, w1.z, w2.z);
     t.inv_w = plane(w0.inv_w, w1.inv_w, w2.inv_w);
     for (size_t k = 0; k < size_t(N); ++k)
-        t.var_w[k] = plane(double(v[0]->clip.var[k]) * w0.inv_w, double(v[1]->clip.var[k]) * w1.inv_w,
-                            double(v[2]->clip.var[k]) * w2.inv_w);
+        t.var_w[k] = plane(double(v0.clip.var[k]) * w0.inv_w, double(v1.clip.var[k]) * w1.inv_w, double(v2.clip.var[k]) * w2.inv_w);
+    t.has_planes = true;
+}
+
+// Both: the whole setup of triangle (v0, v1, v2) for drawing inside `rect`. Returns false if
+// it does not touch `rect`.
+template <int N>
+bool setup_triangle(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const ShadedVertex<N>& v2,
+                    FrontFace front, const Rect& rect, TriangleSetup<N>& t) {
+    if (!setup_coverage(v0, v1, v2, front, rect, t)) return false;
+    setup_planes(t);
     return true;
 }
 
