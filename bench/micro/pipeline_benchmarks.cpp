@@ -37,6 +37,33 @@ void BM_TriangleSetup(benchmark::State& state) {
 }
 BENCHMARK(BM_TriangleSetup);
 
+template <int M>
+ShadedVertex<M> vertex_n(float x, float y) {
+    ClipVertex<M> c{glm::vec4((2 * x / 1920 - 1), (1 - 2 * y / 1080), 0.2f, 1.0f + x * 0.001f), {}};
+    for (int k = 0; k < M; ++k) c.var[size_t(k)] = float(k) * 0.1f + x * 0.001f;
+    ShadedVertex<M> v;
+    finish_vertex(c, Viewport{1920, 1080}, v);
+    return v;
+}
+// The interpolation planes alone (setup_planes), by varying count: N + 2 planes in double.
+template <int M>
+[[gnu::noinline]] SOFTRASTER_AVX2_TARGET void planes_avx2(TriangleSetup<M>& t) {
+    setup_planes(t);
+}
+template <int M>
+void BM_SetupPlanes(benchmark::State& state) {
+    const ShadedVertex<M> a = vertex_n<M>(100.3f, 100.7f), b = vertex_n<M>(103.9f, 101.2f), c = vertex_n<M>(101.1f, 104.6f);
+    TriangleSetup<M> t;
+    if (!setup_coverage(a, b, c, FrontFace::CCW, Rect{128, 128, 192, 192}, t)) state.SkipWithError("outside");
+    for (auto _ : state) {
+        planes_avx2<M>(t);
+        benchmark::ClobberMemory();
+    }
+}
+BENCHMARK(BM_SetupPlanes<3>);
+BENCHMARK(BM_SetupPlanes<6>);
+BENCHMARK(BM_SetupPlanes<9>);
+
 // Covered samples of a triangle filling half of a 64x64 tile (or a small one).
 template <int Samples>
 void BM_Traversal(benchmark::State& state) {

@@ -36,7 +36,7 @@ std::pair<size_t, bool> Context::hidden_surface_run(size_t first, int tile, cons
     if (end == first) return {first + 1, false};
     if (end - first < 2) return {end, false};  // one draw: no overdraw between draws to remove
     double area = 0;
-    for (size_t c = first; c < end; ++c) area += commands_[c]->covered_area(tile, rect);
+    for (size_t c = first; c < end; ++c) area += commands_[c]->covered_area(tile);
     const double tile_area = double(rect.x1 - rect.x0) * double(rect.y1 - rect.y0);
     return {end, area >= kOverdrawForHiddenSurfaceRemoval * tile_area};
 }
@@ -53,6 +53,7 @@ void Context::execute() {
     for_each_item(pool_, vertex_items.size(), [&](size_t i, unsigned) { vertex_items[i].first->process_vertex_chunk(vertex_items[i].second, t); });
     const auto bin_items = work_items(commands_, [](const Command& c) { return c.primitive_chunks(); });
     for_each_item(pool_, bin_items.size(), [&](size_t i, unsigned) { bin_items[i].first->bin_primitive_chunk(bin_items[i].second, t); });
+    for (auto& c : commands_) c->finish_binning(t.grid);
 
     // One thread per tile at a time, every command in order: no locks on the framebuffer.
     const unsigned threads = pool_ ? pool_->size() : 1;
@@ -64,12 +65,16 @@ void Context::execute() {
         for (size_t c = 0; c < commands_.size();) {
             const auto [end, worth_it] = hidden_surface_run(c, int(tile), rect);
             if (!worth_it) {
-                for (; c < end; ++c) shaded[thread] += commands_[c]->draw_tile(int(tile), rect, t);
+                for (; c < end; ++c)
+                    if (!commands_[c]->skips_tile(int(tile))) shaded[thread] += commands_[c]->draw_tile(int(tile), rect, t);
                 continue;
             }
             std::fill_n(owners, size_t(kTileSize) * kTileSize * size_t(fb_->samples()), kNoOwner);
-            for (size_t k = c; k < end; ++k) commands_[k]->visibility_pass(int(tile), rect, t, uint32_t(k - c), owners);
-            for (size_t k = c; k < end; ++k) shaded[thread] += commands_[k]->shading_pass(int(tile), rect, t, uint32_t(k - c), owners);
+            for (size_t k = c; k < end; ++k)
+                if (!commands_[k]->skips_tile(int(tile))) commands_[k]->visibility_pass(int(tile), rect, t, uint32_t(k - c), owners);
+            for (size_t k = c; k < end; ++k)
+                if (!commands_[k]->skips_tile(int(tile)))
+                    shaded[thread] += commands_[k]->shading_pass(int(tile), rect, t, uint32_t(k - c), owners);
             c = end;
         }
     });

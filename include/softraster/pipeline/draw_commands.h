@@ -37,17 +37,29 @@ public:
     virtual void process_vertex_chunk(size_t, const Target&) {}
     virtual size_t primitive_chunks() const { return 0; }
     virtual void bin_primitive_chunk(size_t, const Target&) {}
+    // After all chunks are binned (sequentially): the per-tile totals below.
+    virtual void finish_binning(const TileGrid&) {}
     // Draws this command's part of one tile; returns the fragments shaded.
     virtual uint64_t draw_tile(int tile, const Rect& rect, const Target&) = 0;
 
-    // Hidden-surface removal (hidden_surface_removal.h), for commands that allow it.
-    virtual bool allows_hidden_surface_removal() const { return false; }
+    // A binned command with nothing in the tile: the tile loop passes it by without a call
+    // (a scene of many small objects has most of its draws absent from most tiles).
+    bool skips_tile(int tile) const { return binned_ && tile_triangles_[size_t(tile)] == 0; }
+    size_t triangles_in_tile(int tile) const { return binned_ ? tile_triangles_[size_t(tile)] : 0; }
     // Pixels of the tile this command's triangles cover, summed (each triangle's area, at
     // most its bounding box within the tile): an estimate of the overdraw.
-    virtual double covered_area(int, const Rect&) const { return 0; }
-    virtual size_t triangles_in_tile(int) const { return 0; }
+    double covered_area(int tile) const { return binned_ ? tile_area_[size_t(tile)] : 0.0; }
+
+    // Hidden-surface removal (hidden_surface_removal.h), for commands that allow it.
+    bool allows_hidden_surface_removal() const { return allows_hsr_; }
     virtual void visibility_pass(int, const Rect&, const Target&, uint32_t /*draw*/, uint32_t* /*owners*/) {}
     virtual uint64_t shading_pass(int, const Rect&, const Target&, uint32_t /*draw*/, const uint32_t* /*owners*/) { return 0; }
+
+protected:
+    bool allows_hsr_ = false;
+    bool binned_ = false;  // set by finish_binning of commands binned by tile
+    std::vector<uint32_t> tile_triangles_;
+    std::vector<double> tile_area_;
 };
 
 class ClearCommand final : public Command {
@@ -81,7 +93,9 @@ public:
     using Vertex = typename S::Vertex;
 
     TriangleCommand(const S& shader, const RenderState& state, std::span<const Vertex> vertices, std::span<const uint32_t> indices)
-        : shader_(shader), state_(state), vertices_(vertices), indices_(indices) {}
+        : shader_(shader), state_(state), vertices_(vertices), indices_(indices) {
+        allows_hsr_ = PureShader<S> && B == BlendMode::Opaque && softraster::allows_hidden_surface_removal(state_);
+    }
 
     size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
     void process_vertex_chunk(size_t c, const Target& t) override {
@@ -104,18 +118,15 @@ public:
         return draw_tile_generic(tile, rect, t);
     }
 
-    bool allows_hidden_surface_removal() const override {
-        return PureShader<S> && B == BlendMode::Opaque && softraster::allows_hidden_surface_removal(state_);
-    }
-    size_t triangles_in_tile(int tile) const override {
-        size_t n = 0;
-        for (const TriangleBin<N>& bin : bins_) n += bin.tile_begin[size_t(tile) + 1] - bin.tile_begin[size_t(tile)];
-        return n;
-    }
-    double covered_area(int tile, const Rect&) const override {
-        double area = 0;
-        for (const TriangleBin<N>& bin : bins_) area += bin.covered_area[size_t(tile)];
-        return area;
+    void finish_binning(const TileGrid& grid) override {
+        tile_triangles_.assign(size_t(grid.count()), 0);
+        tile_area_.assign(size_t(grid.count()), 0.0);
+        for (const TriangleBin<N>& bin : bins_)
+            for (size_t tile = 0; tile < tile_triangles_.size(); ++tile) {
+                tile_triangles_[tile] += bin.tile_begin[tile + 1] - bin.tile_begin[tile];
+                tile_area_[tile] += bin.covered_area[tile];
+            }
+        binned_ = true;
     }
     void visibility_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) override {
         if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) visibility_avx2(tile, rect, t, draw, owners);
