@@ -157,4 +157,21 @@ void BM_Resolve(benchmark::State& state) {
 }
 BENCHMARK(BM_Resolve)->Arg(1)->Arg(4);
 
+// The clear, tile by tile as the tile loop runs it, over framebuffers that together exceed
+// the last-level cache (as a frame's own data evicts its framebuffer).
+void BM_ClearTiles(benchmark::State& state) {
+    std::vector<Framebuffer> fbs;
+    for (int i = 0; i < 4; ++i) fbs.emplace_back(1920, 1080, int(state.range(0)));
+    Target t;
+    t.grid = TileGrid(1920, 1080);
+    ClearCommand clear(glm::vec4(0.1f, 0.2f, 0.3f, 1.0f), 1.0f);
+    size_t f = 0;
+    for (auto _ : state) {
+        t.fb = &fbs[f++ % fbs.size()];
+        for (int tile = 0; tile < t.grid.count(); ++tile) clear.draw_tile(tile, t.grid.tile_rect(tile), t);
+        benchmark::ClobberMemory();
+    }
+}
+BENCHMARK(BM_ClearTiles)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
+
 }  // namespace

@@ -49,9 +49,19 @@ void Context::execute() {
     t.viewport = {fb_->width(), fb_->height()};
     for (auto& c : commands_) c->prepare();
 
-    const auto vertex_items = work_items(commands_, [](const Command& c) { return c.vertex_chunks(); });
-    for_each_item(pool_, vertex_items.size(), [&](size_t i, unsigned) { vertex_items[i].first->process_vertex_chunk(vertex_items[i].second, t); });
-    const auto bin_items = work_items(commands_, [](const Command& c) { return c.primitive_chunks(); });
+    // The front end. A small draw (one chunk of vertices, one of primitives) is one item:
+    // its primitives are binned right after its vertices are processed, while they are still
+    // in this core's cache; with many small draws, processing all vertices first would have
+    // evicted them. Bigger draws go in two phases, every chunk of a phase in parallel.
+    auto is_small = [](const Command& c) { return c.vertex_chunks() <= 1 && c.primitive_chunks() <= 1; };
+    const auto vertex_items = work_items(commands_, [&](const Command& c) { return is_small(c) ? size_t(1) : c.vertex_chunks(); });
+    for_each_item(pool_, vertex_items.size(), [&](size_t i, unsigned) {
+        Command& c = *vertex_items[i].first;
+        if (!is_small(c)) return c.process_vertex_chunk(vertex_items[i].second, t);
+        if (c.vertex_chunks() == 1) c.process_vertex_chunk(0, t);
+        if (c.primitive_chunks() == 1) c.bin_primitive_chunk(0, t);
+    });
+    const auto bin_items = work_items(commands_, [&](const Command& c) { return is_small(c) ? size_t(0) : c.primitive_chunks(); });
     for_each_item(pool_, bin_items.size(), [&](size_t i, unsigned) { bin_items[i].first->bin_primitive_chunk(bin_items[i].second, t); });
     for (auto& c : commands_) c->finish_binning(t.grid);
 

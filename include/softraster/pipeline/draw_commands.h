@@ -71,7 +71,19 @@ public:
         static_assert(sizeof(Rgba8) == sizeof(uint32_t));
         uint32_t color;  // filled as 32-bit words, which vectorizes (four bytes do not)
         std::memcpy(&color, &color_, sizeof color);
+        // The tile's rows are far apart in memory, out of reach of the hardware prefetcher:
+        // ask for the rows a few ahead, or each row's writes wait for memory one after
+        // another (bench/micro BM_ClearTiles: 1.9 -> 1.3 ms at 1080p).
+        constexpr int kAhead = 4;
         for (int y = r.y0; y < r.y1; ++y) {
+            if (y + kAhead < r.y1) {
+                const auto* c = reinterpret_cast<const char*>(fb.color_data() + fb.sample_index(r.x0, y + kAhead));
+                const auto* d = reinterpret_cast<const char*>(fb.depth_data() + fb.sample_index(r.x0, y + kAhead));
+                for (size_t k = 0; k < n * sizeof(float); k += 64) {
+                    __builtin_prefetch(c + k, /*write=*/1);
+                    __builtin_prefetch(d + k, /*write=*/1);
+                }
+            }
             std::fill_n(reinterpret_cast<uint32_t*>(fb.color_data() + fb.sample_index(r.x0, y)), n, color);
             std::fill_n(fb.depth_data() + fb.sample_index(r.x0, y), n, depth_);
         }

@@ -65,6 +65,28 @@ inline f8 sqrt(f8 x) {
     for (int l = 0; l < kLanes; ++l) r[l] = std::sqrt(x[l]);  // vectorized (-fno-math-errno)
     return r;
 }
+// any() and bits() take lane masks (each lane all ones or all zeros, as comparisons give)
+// and read the lanes' sign bits: on x86 with movmskps, which every x86-64 has (AVX2 code
+// gets its VEX form), instead of a reduction through shifts and ors.
+#if defined(__x86_64__) || defined(__i386__)
+using f4 = float __attribute__((vector_size(16)));
+inline bool any(i8 m) {
+    using i4 = int32_t __attribute__((vector_size(16)));
+    i4 lo, hi;
+    std::memcpy(&lo, &m, sizeof lo);
+    std::memcpy(&hi, reinterpret_cast<const char*>(&m) + sizeof lo, sizeof hi);
+    const i4 both = lo | hi;
+    f4 f;
+    std::memcpy(&f, &both, sizeof f);
+    return __builtin_ia32_movmskps(f) != 0;
+}
+inline unsigned bits(i8 m) {
+    f4 lo, hi;
+    std::memcpy(&lo, &m, sizeof lo);
+    std::memcpy(&hi, reinterpret_cast<const char*>(&m) + sizeof lo, sizeof hi);
+    return unsigned(__builtin_ia32_movmskps(lo)) | unsigned(__builtin_ia32_movmskps(hi)) << 4;
+}
+#else
 inline bool any(i8 m) {
     int32_t acc = 0;
     for (int l = 0; l < kLanes; ++l) acc |= m[l];
@@ -75,6 +97,7 @@ inline unsigned bits(i8 m) {
     for (int l = 0; l < kLanes; ++l) b |= unsigned(m[l] & 1) << l;
     return b;
 }
+#endif
 
 // ---- rows of eight pixels
 //

@@ -1,0 +1,54 @@
+// Tests of the eight-lane helpers the per-pixel code is built on (pipeline/simd.h).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <vector>
+
+#include "softraster/pipeline/simd.h"
+
+using namespace softraster;
+using namespace softraster::simd;
+
+namespace {
+
+i8 mask_of(unsigned bitset) {
+    i8 m{};
+    for (int l = 0; l < kLanes; ++l) m[l] = (bitset >> l) & 1u ? -1 : 0;
+    return m;
+}
+
+TEST(Simd, BitsAndAnyReadEveryLaneMask) {
+    for (unsigned b = 0; b < 256; ++b) {
+        EXPECT_EQ(bits(mask_of(b)), b);
+        EXPECT_EQ(any(mask_of(b)), b != 0);
+    }
+    // as the comparisons that make masks give them
+    const i8 x = {5, -1, 7, 0, 3, 9, -4, 2};
+    EXPECT_EQ(bits(x > 2), 0b00110101u);
+    EXPECT_FALSE(any(x > 100));
+}
+
+TEST(Simd, GroupsCoverASpanOnceAlignedToEight) {
+    for (int begin = 0; begin < 24; ++begin)
+        for (int end = begin + 1; end <= 40; ++end) {
+            std::vector<int> hits(48, 0);
+            for_each_group(begin, end, [&](int x, i8 lanes) {
+                EXPECT_EQ(x % kLanes, 0);
+                for (int l = 0; l < kLanes; ++l)
+                    if (lanes[l]) ++hits[size_t(x + l)];
+            });
+            for (int x = 0; x < 48; ++x) EXPECT_EQ(hits[size_t(x)], x >= begin && x < end ? 1 : 0) << begin << " " << end;
+        }
+}
+
+TEST(Simd, LoadAndStoreStopAtTheEndOfTheRow) {
+    std::array<float, 16> row{};
+    for (size_t i = 0; i < row.size(); ++i) row[i] = float(i);
+    const int width = 11;  // the group at x = 8 has three pixels in the row
+    const f8 v = load_group<f8>(row.data(), 8, width);
+    for (int l = 0; l < kLanes; ++l) EXPECT_EQ(v[l], l < 3 ? float(8 + l) : 0.0f);
+    store_group(row.data(), 8, width, splat(-1.0f));
+    for (size_t i = 0; i < row.size(); ++i) EXPECT_EQ(row[i], i >= 8 && i < 11 ? -1.0f : float(i));
+}
+
+}  // namespace
