@@ -103,12 +103,18 @@ TAIL = """
   perspective divide, viewport mapping and snapping), then primitive assembly, clipping,
   culling and binning into 64x64 tiles (`include/softraster/pipeline/binning.h`), which
   also sums each tile's covered area (the overdraw estimate for hidden-surface removal).
-- Back end, one thread per tile, every draw in order: triangle setup with planes rebased
-  to the tile (the vertices of triangles a few places ahead are prefetched: a tile revisits
-  every draw's vertex buffer), rasterization in groups of eight pixels aligned to multiples
-  of eight (whole-vector loads and stores; a group never straddles two tiles), the early
-  depth test, then shading specialized at compile time for the model, texture and vertex
-  colors, and 8-bit fixed-point blending.
+- Small draws (one chunk of vertices and primitives, as in bench_many_objects) are one
+  front-end item each: binned right after their vertices are shaded, while those are still
+  in the core's cache. The post-transform vertex keeps its varyings once (72 bytes for
+  Blinn-Phong): a million-triangle mesh writes and reads that buffer every frame.
+- Back end, one thread per tile, every draw in order: the clear (prefetching the rows
+  ahead: a tile's rows are too far apart for the hardware prefetcher), triangle setup
+  in two parts, coverage (integer edge functions) and then the interpolation planes rebased
+  to the tile, made only once a triangle covers a sample (many triangles of a
+  million-triangle mesh cover none); rasterization in groups of eight pixels aligned to
+  multiples of eight (whole-vector loads and stores; a group never straddles two tiles),
+  the early depth test, then shading specialized at compile time for the model, texture and vertex colors, and
+  8-bit fixed-point blending. Draws with nothing in a tile are passed by without a call.
 - Small triangles of opaque draws go through the fragment queue
   (`include/softraster/pipeline/fragment_queue.h`): depth is tested and written at once,
   and the fragments that pass wait to be shaded eight at a time whatever triangle they
@@ -118,18 +124,20 @@ TAIL = """
 - Stacks of opaque draws (bench_fill) are drawn in two passes per tile: visibility, then
   shading of the last writer of each pixel only (`hidden_surface_removal.h`).
 
-Microbenchmarks (Google Benchmark) of setup, traversal, shading and resolve:
+Microbenchmarks (Google Benchmark) of setup, traversal, shading, the clear and resolve:
 `build-release/bench/micro_benchmarks` (built when libbenchmark-dev is installed).
 
 ## Where the rest of the gap is
 
 What the profiles (`perf record` on `softraster bench`) point at next:
 
-- Triangle-heavy scenes at 1 thread (bench_highpoly*, bench_many_objects): triangle setup
-  (about 26 ns per triangle and tile, double-precision planes for depth, 1/w and every
-  varying) and the front end (vertex shading, binning: a quarter of the frame) dominate.
-  Next: set up once per triangle in the front end, in parallel, instead of once per tile;
-  a smaller post-transform vertex (the varyings are stored twice).
+- Triangle-heavy scenes at 1 thread (bench_highpoly*, bench_many_objects): per triangle,
+  setup (the planes take about 21 ns for Blinn-Phong's eight, in double precision:
+  `BM_SetupPlanes`), binning (branches on culling and clipping that a mesh's triangle
+  order makes hard to predict) and vertex shading, one vertex at a time. Setting up once
+  per triangle instead of once per tile would not help much: at about one pixel per
+  triangle, few triangles reach a second tile. Next: shading eight vertices at a time, and
+  binning without per-triangle branches.
 - bench_fill: the visibility pass walks every layer. A coarse per-tile depth bound (skip
   a triangle whose nearest depth is behind the tile's farthest stored depth) would skip
   the hidden layers when they are drawn front to back.

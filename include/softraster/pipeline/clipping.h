@@ -19,6 +19,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
+#include "softraster/pipeline/simd.h"
+
 
 namespace softraster {
 
@@ -49,12 +51,14 @@ struct ClipPlanes {
                  glm::vec4(0, 1, 0, gy), glm::vec4(0, -1, 0, gy)}};  // bottom, top
     }
 
-    // Bit i set when p is outside plane i (Cohen–Sutherland style outcode).
+    // Bit i set when p is outside plane i (Cohen–Sutherland style outcode). The six dot
+    // products side by side in vector lanes (the two spare lanes are 0, never outside), each
+    // summed as glm::dot sums it, so the clipper's glm::dot agrees bit for bit on the side.
     unsigned outcode(const glm::vec4& p) const {
-        unsigned code = 0;
-        for (int i = 0; i < kCount; ++i)
-            if (glm::dot(planes[size_t(i)], p) < 0.0f) code |= 1u << i;
-        return code;
+        simd::f8 qx{}, qy{}, qz{}, qw{};
+        for (size_t i = 0; i < size_t(kCount); ++i) qx[i] = planes[i].x, qy[i] = planes[i].y, qz[i] = planes[i].z, qw[i] = planes[i].w;
+        const simd::f8 d = (qx * p.x + qy * p.y) + (qz * p.z + qw * p.w);
+        return simd::bits(d < 0.0f);
     }
 };
 
