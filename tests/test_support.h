@@ -62,6 +62,18 @@ inline glm::vec4 window_to_clip(float x, float y, int width, int height, float z
     return glm::vec4((2.0f * x / float(width) - 1.0f) * w, (1.0f - 2.0f * y / float(height)) * w, (2.0f * z - 1.0f) * w, w);
 }
 
+// Three post-transform vertices at random within sx by sy pixels around (cx, cy) of a
+// 256x256 viewport (one varying, unused). False if one cannot be mapped to the window.
+inline bool random_triangle(std::mt19937& rng, float cx, float cy, float sx, float sy, std::array<ShadedVertex<1>, 3>& out) {
+    std::uniform_real_distribution<float> u(0, 1);
+    for (auto& v : out) {
+        const float x = cx + sx * (u(rng) - 0.5f);
+        const float y = cy + sy * (u(rng) - 0.5f);
+        if (!finish_vertex(ClipVertex<1>{window_to_clip(x, y, 256, 256), {}}, Viewport{256, 256}, v)) return false;
+    }
+    return true;
+}
+
 // Writes `contents` to <temp>/<folder>/<name> and returns the path.
 inline std::filesystem::path write_temp_file(const std::string& folder, const std::string& name, const std::string& contents) {
     const auto dir = std::filesystem::temp_directory_path() / folder;

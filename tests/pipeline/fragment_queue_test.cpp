@@ -59,10 +59,7 @@ void expect_small_coverage_matches() {
     for (int k = 0; k < 3000; ++k) {
         const float cx = 50 + 90 * u(rng), cy = 115 + 90 * u(rng), size = 1 + 63 * u(rng) * u(rng);
         std::array<ShadedVertex<1>, 3> p;
-        for (auto& q : p) {
-            ClipVertex<1> c{window_to_clip(cx + size * (u(rng) - 0.5f), cy + size * (u(rng) - 0.5f), 256, 256), {}};
-            ASSERT_TRUE(finish_vertex(c, Viewport{256, 256}, q));
-        }
+        ASSERT_TRUE(random_triangle(rng, cx, cy, size, size, p));
         if (signed_area2(p[0].X, p[0].Y, p[1].X, p[1].Y, p[2].X, p[2].Y) == 0) continue;
         TriangleSetup<1> t;
         if (!setup_triangle(p[0], p[1], p[2], FrontFace::CCW, tile, t) || !has_small_edges(t)) continue;

@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 using namespace softraster;
-using test::window_to_clip;
+using test::random_triangle;
 
 namespace {
 
@@ -24,10 +24,7 @@ TEST(RowSpans, SameCoverageAsPerPixelTest) {
         const float cx = 40 + 110 * u(rng), cy = 100 + 110 * u(rng);
         const float sx = 0.3f + 200 * u(rng) * u(rng) * u(rng), sy = 0.3f + 200 * u(rng) * u(rng) * u(rng);
         std::array<ShadedVertex<1>, 3> p;
-        for (auto& q : p) {
-            ClipVertex<1> c{window_to_clip(cx + sx * (u(rng) - 0.5f), cy + sy * (u(rng) - 0.5f), 256, 256), {}};
-            ASSERT_TRUE(finish_vertex(c, Viewport{256, 256}, q));
-        }
+        ASSERT_TRUE(random_triangle(rng, cx, cy, sx, sy, p));
         if (signed_area2(p[0].X, p[0].Y, p[1].X, p[1].Y, p[2].X, p[2].Y) == 0) continue;
         TriangleSetup<1> t;
         if (!setup_triangle(p[0], p[1], p[2], FrontFace::CCW, tile, t)) continue;
