@@ -1,7 +1,8 @@
 // The recorded commands a Context executes: a clear, and draws of triangles, lines and
 // points. Each runs in three phases, every phase over all commands in parallel:
 //   1. vertex processing, in chunks of vertices;
-//   2. primitive assembly, clipping, culling and binning, in chunks of primitives;
+//   2. primitive assembly, clipping, culling and binning, in chunks of primitives
+//      (a draw of one chunk of each does 1 and 2 as one item, see Context::execute);
 //   3. per tile, in draw order: triangle setup, rasterization, fragment shading, output merge.
 // A command is one virtual call per chunk or per tile; everything per pixel inside it is a
 // template specialized for the shader, the sample count and the blend mode.
