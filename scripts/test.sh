@@ -18,5 +18,7 @@ run_suite release -DCMAKE_BUILD_TYPE=Release
 if [ "${1:-}" != "release" ]; then
   # detect_leaks: LeakSanitizer is part of ASan; halt on the first UB report.
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  run_suite asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTRASTER_SANITIZE=ON
+  # -O1 -g1 (line tables: sanitizer reports keep file and line) builds in about half the
+  # time of -O2 -g, and the suite runs as fast.
+  run_suite asan -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DSOFTRASTER_SANITIZE=ON
 fi
