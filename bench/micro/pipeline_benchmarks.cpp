@@ -13,10 +13,11 @@ namespace {
 
 constexpr int N = 9;  // a lit, textured, colored surface
 
-ShadedVertex<N> vertex(float x, float y) {
-    ClipVertex<N> c{glm::vec4((2 * x / 1920 - 1), (1 - 2 * y / 1080), 0.2f, 1.0f), {}};
-    for (int k = 0; k < N; ++k) c.var[size_t(k)] = float(k) * 0.1f + x * 0.001f;
-    ShadedVertex<N> v;
+template <int M = N>
+ShadedVertex<M> vertex(float x, float y, float w = 1.0f) {
+    ClipVertex<M> c{glm::vec4((2 * x / 1920 - 1), (1 - 2 * y / 1080), 0.2f, w), {}};
+    for (int k = 0; k < M; ++k) c.var[size_t(k)] = float(k) * 0.1f + x * 0.001f;
+    ShadedVertex<M> v;
     finish_vertex(c, Viewport{1920, 1080}, v);
     return v;
 }
@@ -37,14 +38,6 @@ void BM_TriangleSetup(benchmark::State& state) {
 }
 BENCHMARK(BM_TriangleSetup);
 
-template <int M>
-ShadedVertex<M> vertex_n(float x, float y) {
-    ClipVertex<M> c{glm::vec4((2 * x / 1920 - 1), (1 - 2 * y / 1080), 0.2f, 1.0f + x * 0.001f), {}};
-    for (int k = 0; k < M; ++k) c.var[size_t(k)] = float(k) * 0.1f + x * 0.001f;
-    ShadedVertex<M> v;
-    finish_vertex(c, Viewport{1920, 1080}, v);
-    return v;
-}
 // The interpolation planes alone (setup_planes), by varying count: N + 2 planes in double.
 template <int M>
 [[gnu::noinline]] SOFTRASTER_AVX2_TARGET void planes_avx2(TriangleSetup<M>& t) {
@@ -52,7 +45,9 @@ template <int M>
 }
 template <int M>
 void BM_SetupPlanes(benchmark::State& state) {
-    const ShadedVertex<M> a = vertex_n<M>(100.3f, 100.7f), b = vertex_n<M>(103.9f, 101.2f), c = vertex_n<M>(101.1f, 104.6f);
+    // (w varies, so 1/w and every varying/w have gradients)
+    const ShadedVertex<M> a = vertex<M>(100.3f, 100.7f, 1.1003f), b = vertex<M>(103.9f, 101.2f, 1.1039f),
+                          c = vertex<M>(101.1f, 104.6f, 1.1011f);
     TriangleSetup<M> t;
     if (!setup_coverage(a, b, c, FrontFace::CCW, Rect{128, 128, 192, 192}, t)) state.SkipWithError("outside");
     for (auto _ : state) {

@@ -45,11 +45,11 @@ public:
 
     // A binned command with nothing in the tile: the tile loop passes it by without a call
     // (a scene of many small objects has most of its draws absent from most tiles).
-    bool skips_tile(int tile) const { return binned_ && tile_triangles_[size_t(tile)] == 0; }
-    size_t triangles_in_tile(int tile) const { return binned_ ? tile_triangles_[size_t(tile)] : 0; }
+    bool skips_tile(int tile) const { return binned() && tile_triangles_[size_t(tile)] == 0; }
+    size_t triangles_in_tile(int tile) const { return binned() ? tile_triangles_[size_t(tile)] : 0; }
     // Pixels of the tile this command's triangles cover, summed (each triangle's area, at
     // most its bounding box within the tile): an estimate of the overdraw.
-    double covered_area(int tile) const { return binned_ ? tile_area_[size_t(tile)] : 0.0; }
+    double covered_area(int tile) const { return binned() ? tile_area_[size_t(tile)] : 0.0; }
 
     // Hidden-surface removal (hidden_surface_removal.h), for commands that allow it.
     bool allows_hidden_surface_removal() const { return allows_hsr_; }
@@ -58,7 +58,8 @@ public:
 
 protected:
     bool allows_hsr_ = false;
-    bool binned_ = false;  // set by finish_binning of commands binned by tile
+    // Filled by finish_binning of commands binned by tile (empty for the others).
+    bool binned() const { return !tile_triangles_.empty(); }
     std::vector<uint32_t> tile_triangles_;
     std::vector<double> tile_area_;
 };
@@ -139,7 +140,6 @@ public:
                 tile_triangles_[tile] += bin.tile_begin[tile + 1] - bin.tile_begin[tile];
                 tile_area_[tile] += bin.covered_area[tile];
             }
-        binned_ = true;
     }
     void visibility_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) override {
         if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) visibility_avx2(tile, rect, t, draw, owners);
