@@ -25,7 +25,7 @@ ShadedVertex<M> vertex(float x, float y, float w = 1.0f) {
 // (AVX2 code, as in the back end)
 [[gnu::noinline]] SOFTRASTER_AVX2_TARGET bool setup_avx2(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c,
                                                         const Rect& tile, TriangleSetup<N>& t) {
-    return setup_triangle(a, b, c, FrontFace::CCW, tile, t);
+    return setup_triangle<1>(a, b, c, FrontFace::CCW, tile, t);
 }
 void BM_TriangleSetup(benchmark::State& state) {
     const ShadedVertex<N> a = vertex(100.3f, 100.7f), b = vertex(103.9f, 101.2f), c = vertex(101.1f, 104.6f);
@@ -49,7 +49,7 @@ void BM_SetupPlanes(benchmark::State& state) {
     const ShadedVertex<M> a = vertex<M>(100.3f, 100.7f, 1.1003f), b = vertex<M>(103.9f, 101.2f, 1.1039f),
                           c = vertex<M>(101.1f, 104.6f, 1.1011f);
     TriangleSetup<M> t;
-    if (!setup_coverage(a, b, c, FrontFace::CCW, Rect{128, 128, 192, 192}, t)) state.SkipWithError("outside");
+    if (!setup_coverage<1>(a, b, c, FrontFace::CCW, Rect{128, 128, 192, 192}, t)) state.SkipWithError("outside");
     for (auto _ : state) {
         planes_avx2<M>(t);
         benchmark::ClobberMemory();
@@ -65,7 +65,7 @@ void BM_Traversal(benchmark::State& state) {
     const float size = float(state.range(0));
     const ShadedVertex<N> a = vertex(64.2f, 64.4f), b = vertex(64.2f + size, 64.9f), c = vertex(64.6f, 64.1f + size);
     TriangleSetup<N> t;
-    setup_triangle(a, b, c, FrontFace::CCW, Rect{64, 64, 128, 128}, t);
+    setup_triangle<Samples>(a, b, c, FrontFace::CCW, Rect{64, 64, 128, 128}, t);
     int64_t pixels = 0;
     for (auto _ : state) {
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) { pixels += px.mask; });
@@ -102,7 +102,7 @@ void BM_TraversalGroups(benchmark::State& state) {
     const float size = float(state.range(0));
     const ShadedVertex<N> a = vertex(64.2f, 64.4f), b = vertex(64.2f + size, 64.9f), c = vertex(64.6f, 64.1f + size);
     TriangleSetup<N> t;
-    setup_triangle(a, b, c, FrontFace::CCW, Rect{64, 64, 128, 128}, t);
+    setup_triangle<Samples>(a, b, c, FrontFace::CCW, Rect{64, 64, 128, 128}, t);
     for (auto _ : state) {
         if constexpr (Small) benchmark::DoNotOptimize(covered_small<Samples>(t));
         else benchmark::DoNotOptimize(covered_by_spans(t));

@@ -62,7 +62,7 @@ void expect_small_coverage_matches() {
         ASSERT_TRUE(random_triangle(rng, cx, cy, size, size, p));
         if (signed_area2(p[0].X, p[0].Y, p[1].X, p[1].Y, p[2].X, p[2].Y) == 0) continue;
         TriangleSetup<1> t;
-        if (!setup_triangle(p[0], p[1], p[2], FrontFace::CCW, tile, t) || !has_small_edges(t)) continue;
+        if (!setup_triangle<Samples>(p[0], p[1], p[2], FrontFace::CCW, tile, t) || !has_small_edges(t)) continue;
         std::vector<unsigned> expected(64 * 64, 0), got(64 * 64, 0);
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
             expected[size_t((px.y - tile.y0) * 64 + px.x - tile.x0)] = px.mask;

@@ -27,7 +27,7 @@ TEST(RowSpans, SameCoverageAsPerPixelTest) {
         ASSERT_TRUE(random_triangle(rng, cx, cy, sx, sy, p));
         if (signed_area2(p[0].X, p[0].Y, p[1].X, p[1].Y, p[2].X, p[2].Y) == 0) continue;
         TriangleSetup<1> t;
-        if (!setup_triangle(p[0], p[1], p[2], FrontFace::CCW, tile, t)) continue;
+        if (!setup_triangle<1>(p[0], p[1], p[2], FrontFace::CCW, tile, t)) continue;
         std::vector<int> expected(64 * 64, 0), got(64 * 64, 0);
         rasterize_triangle<1>(t, t.bounds, [&](const CoveredPixel<1>& px) { expected[size_t((px.y - tile.y0) * 64 + px.x - tile.x0)] = 1; });
         rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {

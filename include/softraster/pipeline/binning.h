@@ -2,8 +2,9 @@
 //
 // Following Mesa llvmpipe (lp_setup -> lp_scene -> lp_rast): the picture is cut into 64x64
 // tiles; each triangle that survives clipping and culling is appended to the bin of every
-// tile its bounding box touches. Later one thread at a time owns a tile and draws its bin
-// in draw order, so no two threads ever write the same pixel and no locks are needed.
+// tile its bounding box touches (the pixels with a sample in the box). Later one thread at
+// a time owns a tile and draws its bin in draw order, so no two threads ever write the same
+// pixel and no locks are needed.
 //
 // The triangles of a draw are binned in chunks, in parallel; each chunk groups its
 // triangles by tile (a counting sort), keeping their order, so walking the chunks in order
@@ -63,8 +64,10 @@ struct FaceState {
     FrontFace front = FrontFace::CCW;
 };
 
-// Assembles, clips, culls and bins the triangles of `indices` (three per triangle).
-template <int N>
+// Assembles, clips, culls and bins the triangles of `indices` (three per triangle), for a
+// framebuffer of `Samples` samples per pixel: a triangle whose bounding box holds no sample
+// is dropped here (triangle_setup.h, pixel_bounds).
+template <int Samples, int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
                    const Viewport& vp, FaceState faces, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
@@ -78,7 +81,7 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
         const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
         if (area2 == 0) return;  // zero snapped area: never drawn
         if (is_culled(is_front_facing(area2 < 0, faces.front), faces.cull)) return;
-        const Rect r = pixel_bounds(a, b, c);
+        const Rect r = pixel_bounds<Samples>(a, b, c);
         const int x0 = std::max(r.x0, screen.x0), y0 = std::max(r.y0, screen.y0);
         const int x1 = std::min(r.x1, screen.x1), y1 = std::min(r.y1, screen.y1);
         if (x0 >= x1 || y0 >= y1) return;

@@ -175,7 +175,7 @@ private:
     SOFTRASTER_FLATTEN void bin_primitive_chunk_generic(size_t c, const Target& t) { bin_primitive_chunk_body(c, t); }
     void bin_primitive_chunk_body(size_t c, const Target& t) {
         const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
-        bin_triangles(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), t.planes, t.viewport,
+        bin_triangles<Samples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), t.planes, t.viewport,
                       FaceState{state_.cull, state_.front_face}, t.grid, bins_[c]);
     }
 
@@ -333,7 +333,7 @@ private:
                     for (uint32_t a = k + 1; a < std::min(end, k + kAhead); ++a) prefetch(bin, bin.refs[a]);
                 if (k + kAhead < end) prefetch(bin, bin.refs[k + kAhead]);
                 const TriangleRef& r = bin.refs[k];
-                if (setup_coverage(bin.vertex(r.v[0], post_.data()), bin.vertex(r.v[1], post_.data()),
+                if (setup_coverage<Samples>(bin.vertex(r.v[0], post_.data()), bin.vertex(r.v[1], post_.data()),
                                    bin.vertex(r.v[2], post_.data()), state_.front_face, rect, setup)) {
                     if constexpr (Planes) setup_planes(setup);
                     f(setup, ordinal);

@@ -10,21 +10,10 @@
 #include <cstdint>
 
 #include "softraster/pipeline/interpolation.h"
+#include "softraster/pipeline/sample_pattern.h"
 #include "softraster/pipeline/triangle_setup.h"
 
 namespace softraster {
-
-// Sample positions inside a pixel in 1/256 pixel, x right, y down from its top-left corner.
-template <int Samples>
-struct SamplePattern;
-template <>
-struct SamplePattern<1> {
-    static constexpr std::array<int, 1> x = {128}, y = {128};
-};
-template <>
-struct SamplePattern<4> {  // (0.375, 0.125), (0.875, 0.375), (0.125, 0.625), (0.625, 0.875)
-    static constexpr std::array<int, 4> x = {96, 224, 32, 160}, y = {32, 96, 160, 224};
-};
 
 // One pixel the triangle touches: its covered samples and their depths.
 template <int Samples>

@@ -28,6 +28,7 @@
 #include <utility>
 
 #include "softraster/pipeline/culling.h"
+#include "softraster/pipeline/sample_pattern.h"
 #include "softraster/pipeline/vertex_processing.h"
 #include "softraster/render_state.h"
 
@@ -51,12 +52,19 @@ inline int64_t signed_area2(int64_t x0, int64_t y0, int64_t x1, int64_t y1, int6
     return (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);
 }
 
-// Pixels whose samples the snapped triangle may cover: any sample of pixel i lies in
-// [256 i, 256 i + 256), so floor of the extremes, inclusive.
-template <int N>
+// Pixels with a sample inside the bounding box [m, M] of the snapped triangle: pixel i has
+// its samples at 256 i + s with s in [lo, hi] (sample_pattern.h), so one may be inside only if
+// 256 i + hi >= m and 256 i + lo <= M, i.e. ceil((m - hi) / 256) <= i <= floor((M - lo) / 256).
+// Empty for most triangles of a mesh finer than the pixels: they fall between the samples
+// and are dropped here, before binning stores them.
+template <int Samples, int N>
 inline Rect pixel_bounds(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c) {
-    return {std::min({a.X, b.X, c.X}) >> kSubpixelBits, std::min({a.Y, b.Y, c.Y}) >> kSubpixelBits,
-            (std::max({a.X, b.X, c.X}) >> kSubpixelBits) + 1, (std::max({a.Y, b.Y, c.Y}) >> kSubpixelBits) + 1};
+    constexpr SampleExtent s = sample_extent<Samples>();
+    constexpr int kRoundUp = int(kSubpixelOne) - 1;
+    return {(std::min({a.X, b.X, c.X}) - s.x_hi + kRoundUp) >> kSubpixelBits,
+            (std::min({a.Y, b.Y, c.Y}) - s.y_hi + kRoundUp) >> kSubpixelBits,
+            ((std::max({a.X, b.X, c.X}) - s.x_lo) >> kSubpixelBits) + 1,
+            ((std::max({a.Y, b.Y, c.Y}) - s.y_lo) >> kSubpixelBits) + 1};
 }
 
 template <int N>
@@ -81,11 +89,11 @@ struct TriangleSetup {
 
 // Sets up the coverage of triangle (v0, v1, v2), already culled and known to have non-zero
 // snapped area, for drawing inside `rect`: edge functions, fill-rule bias, bounds and facing.
-// Returns false if it does not touch `rect`.
-template <int N>
+// Returns false if none of the samples of `rect` is in its bounding box.
+template <int Samples, int N>
 bool setup_coverage(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const ShadedVertex<N>& v2,
                     FrontFace front, const Rect& rect, TriangleSetup<N>& t) {
-    const Rect b = pixel_bounds(v0, v1, v2);
+    const Rect b = pixel_bounds<Samples>(v0, v1, v2);
     t.bounds = {std::max(rect.x0, b.x0), std::max(rect.y0, b.y0), std::min(rect.x1, b.x1), std::min(rect.y1, b.y1)};
     if (t.bounds.x0 >= t.bounds.x1 || t.bounds.y0 >= t.bounds.y1) return false;
     const int64_t area2 = signed_area2(v0.X, v0.Y, v1.X, v1.Y, v2.X, v2.Y);
@@ -134,11 +142,11 @@ void setup_planes(TriangleSetup<N>& t) {
 }
 
 // Both: the whole setup of triangle (v0, v1, v2) for drawing inside `rect`. Returns false if
-// it does not touch `rect`.
-template <int N>
+// none of the samples of `rect` is in its bounding box.
+template <int Samples, int N>
 bool setup_triangle(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const ShadedVertex<N>& v2,
                     FrontFace front, const Rect& rect, TriangleSetup<N>& t) {
-    if (!setup_coverage(v0, v1, v2, front, rect, t)) return false;
+    if (!setup_coverage<Samples>(v0, v1, v2, front, rect, t)) return false;
     setup_planes(t);
     return true;
 }
