@@ -7,6 +7,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 #include <glm/vec4.hpp>
@@ -45,21 +46,70 @@ bool finish_vertex(const ClipVertex<N>& c, const Viewport& vp, ShadedVertex<N>& 
     return true;
 }
 
-// Shades vertices [begin, end) of `vertices` into out[begin, end).
+// The fixed-function part of vertex processing for eight shaded vertices at once (their
+// clip positions set): finiteness, clip outcode, perspective divide and viewport mapping,
+// each lane computed with the very operations of ClipPlanes::outcode and to_window, so the
+// results are the same bits as one vertex at a time (no contraction: CMakeLists.txt).
+template <int N>
+void finish_vertices8(ShadedVertex<N>* out, const ClipPlanes& planes, const Viewport& vp) {
+    using namespace simd;
+    f8 x, y, z, w;
+    for (int l = 0; l < kLanes; ++l) {
+        const glm::vec4& p = out[l].clip.position;
+        x[l] = p.x, y[l] = p.y, z[l] = p.z, w[l] = p.w;
+    }
+    // |v| <= FLT_MAX: false for infinities and NaN, as !std::isfinite
+    auto finite = [](f8 v) { return select(v < 0.0f, -v, v) <= std::numeric_limits<float>::max(); };
+    const i8 in_range = finite(x) & finite(y) & finite(z) & finite(w);
+    i8 outcode{};
+    for (size_t i = 0; i < size_t(ClipPlanes::kCount); ++i) {
+        const glm::vec4& q = planes.planes[i];
+        const f8 d = (q.x * x + q.y * y) + (q.z * z + q.w * w);
+        outcode |= (d < 0.0f) & int32_t(1u << i);
+    }
+    const f8 inv_w = 1.0f / w;
+    const f8 wx = (x * inv_w + 1.0f) * 0.5f * float(vp.width);
+    const f8 wy = (1.0f - y * inv_w) * 0.5f * float(vp.height);
+    const f8 wz = (z * inv_w + 1.0f) * 0.5f;
+    const i8 mapped = (w > 0.0f) & finite(wx) & finite(wy) & finite(wz) & finite(inv_w);
+    for (int l = 0; l < kLanes; ++l) {
+        ShadedVertex<N>& o = out[l];
+        o.finite = in_range[l] != 0;
+        o.outcode = unsigned(outcode[l]);
+        if (!o.finite || o.outcode != 0) continue;
+        if (!mapped[l]) {
+            o.finite = false;
+            continue;
+        }
+        o.window = {wx[l], wy[l], wz[l], inv_w[l]};
+        o.X = int32_t(snap_to_subpixel(wx[l]));
+        o.Y = int32_t(snap_to_subpixel(wy[l]));
+    }
+}
+
+// Shades vertices [begin, end) of `vertices` into out[begin, end): the vertex shader one
+// vertex at a time, the fixed-function part eight at a time.
 template <Shader S>
 void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices, size_t begin, size_t end,
                       const ClipPlanes& planes, const Viewport& vp,
                       std::span<ShadedVertex<kVaryingCount<typename S::Varyings>>> out) {
-    for (size_t i = begin; i < end; ++i) {
+    auto shade = [&](size_t i) {
         typename S::Varyings v{};
+        out[i].clip.position = shader.vertex(vertices[i], v);
+        out[i].clip.var = to_array(v);
+    };
+    size_t i = begin;
+    for (; i + simd::kLanes <= end; i += simd::kLanes) {
+        for (size_t l = 0; l < size_t(simd::kLanes); ++l) shade(i + l);
+        finish_vertices8(&out[i], planes, vp);
+    }
+    for (; i < end; ++i) {  // the last few
+        shade(i);
         auto& o = out[i];
-        o.clip.position = shader.vertex(vertices[i], v);
-        o.clip.var = to_array(v);
         const glm::vec4 p = o.clip.position;
         o.finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
-        if (!o.finite) continue;
-        o.outcode = planes.outcode(p);
-        if (o.outcode == 0 && !finish_vertex(o.clip, vp, o)) o.finite = false;
+        o.outcode = o.finite ? planes.outcode(p) : 0;
+        if (o.outcode == 0 && o.finite && !finish_vertex(o.clip, vp, o)) o.finite = false;
     }
 }
 
