@@ -99,10 +99,14 @@ llvmpipe's median frame time.
 TAIL = """
 ## How the time is spent
 
-- Front end, in parallel over chunks: vertex shading (once per vertex, with the
-  perspective divide, viewport mapping and snapping), then primitive assembly, clipping,
-  culling and binning into 64x64 tiles (`include/softraster/pipeline/binning.h`), which
-  also sums each tile's covered area (the overdraw estimate for hidden-surface removal).
+- Front end, in parallel over chunks: vertex shading (once per vertex; the shader one
+  vertex at a time, then the outcode, perspective divide, viewport mapping and snapping
+  eight vertices at a time), then primitive assembly, clipping, culling and binning into
+  64x64 tiles (`include/softraster/pipeline/binning.h`), which also sums each tile's
+  covered area (the overdraw estimate for hidden-surface removal). A triangle is bounded
+  by the pixels with a sample inside its bounding box (`sample_pattern.h`): most
+  triangles of a mesh finer than the pixels fall between the samples and are dropped
+  before they are binned.
 - Small draws (one chunk of vertices and primitives, as in bench_many_objects) are one
   front-end item each: binned right after their vertices are shaded, while those are still
   in the core's cache. The post-transform vertex keeps its varyings once (72 bytes for
@@ -132,12 +136,12 @@ Microbenchmarks (Google Benchmark) of setup, traversal, shading, the clear and r
 What the profiles (`perf record` on `softraster bench`) point at next:
 
 - Triangle-heavy scenes at 1 thread (bench_highpoly*, bench_many_objects): per triangle,
-  setup (the planes take about 21 ns for Blinn-Phong's eight, in double precision:
-  `BM_SetupPlanes`), binning (branches on culling and clipping that a mesh's triangle
-  order makes hard to predict) and vertex shading, one vertex at a time. Setting up once
-  per triangle instead of once per tile would not help much: at about one pixel per
-  triangle, few triangles reach a second tile. Next: shading eight vertices at a time, and
-  binning without per-triangle branches.
+  setup (the planes take about 13-21 ns in double precision: `BM_SetupPlanes`), binning
+  (branches on culling and clipping that a mesh's triangle order makes hard to predict)
+  and the vertex shader, still one vertex at a time (a batched vertex function in the
+  shader would do the matrix products eight at a time). Setting up once per triangle
+  instead of once per tile would not help much: at about one pixel per triangle, few
+  triangles reach a second tile.
 - bench_fill: the visibility pass walks every layer. A coarse per-tile depth bound (skip
   a triangle whose nearest depth is behind the tile's farthest stored depth) would skip
   the hidden layers when they are drawn front to back.
