@@ -30,14 +30,19 @@ struct Span {
 };
 // Rows at most this many pixels wide test each pixel instead (small triangles).
 inline constexpr int kNarrow = 16;
+// The division (tens of cycles for 64 bits) only where the edge crosses the row: a row
+// wholly on one side of it, as most rows of a big triangle are, is told by its last pixel.
 inline Span edge_span(int64_t e, int64_t step, int n) {
     if (step == 0) return e >= 0 ? Span{0, n} : Span{0, 0};
+    const int64_t last = e + step * (n - 1);
     if (step > 0) {  // inside from some k on: k >= ceil(-e / step)
         if (e >= 0) return {0, n};
+        if (last < 0) return {n, n};
         const int64_t k = (-e + step - 1) / step;
         return {int(std::min<int64_t>(k, n)), n};
     }
     if (e < 0) return {0, 0};  // step < 0: inside up to k <= floor(e / -step)
+    if (last >= 0) return {0, n};
     const int64_t k = e / -step + 1;
     return {0, int(std::min<int64_t>(k, n))};
 }
