@@ -115,10 +115,11 @@ TAIL = """
   ahead: a tile's rows are too far apart for the hardware prefetcher), triangle setup
   in two parts, coverage (integer edge functions) and then the interpolation planes rebased
   to the tile, made only once a triangle covers a sample (many triangles of a
-  million-triangle mesh cover none); rasterization in groups of eight pixels aligned to
-  multiples of eight (whole-vector loads and stores; a group never straddles two tiles),
-  the early depth test, then shading specialized at compile time for the model, texture and vertex colors, and
-  8-bit fixed-point blending. Draws with nothing in a tile are passed by without a call.
+  million-triangle mesh cover none); rasterization in row spans (a 64-bit division only
+  where an edge crosses the row), in 32-bit lanes for triangles of a few narrow rows, and
+  in groups of eight pixels aligned to multiples of eight (whole-vector loads and stores;
+  a group never straddles two tiles), the early depth test, then shading specialized at
+  compile time for the model, texture and vertex colors, and 8-bit fixed-point blending. Draws with nothing in a tile are passed by without a call.
 - Small triangles of opaque draws go through the fragment queue
   (`include/softraster/pipeline/fragment_queue.h`): depth is tested and written at once,
   and the fragments that pass wait to be shaded eight at a time whatever triangle they
@@ -138,10 +139,10 @@ What the profiles (`perf record` on `softraster bench`) point at next:
 - Triangle-heavy scenes at 1 thread (bench_highpoly*, bench_many_objects): per triangle,
   setup (the planes take about 13-21 ns in double precision: `BM_SetupPlanes`), binning
   (branches on culling and clipping that a mesh's triangle order makes hard to predict)
-  and the vertex shader, still one vertex at a time (a batched vertex function in the
-  shader would do the matrix products eight at a time). Setting up once per triangle
-  instead of once per tile would not help much: at about one pixel per triangle, few
-  triangles reach a second tile.
+  and the clear. Running the vertex shader's matrix products eight vertices at a time
+  measured no faster than one at a time. Setting up once per triangle instead of once
+  per tile would not help much: at about one pixel per triangle, few triangles reach a
+  second tile.
 - bench_fill: the visibility pass walks every layer. A coarse per-tile depth bound (skip
   a triangle whose nearest depth is behind the tile's farthest stored depth) would skip
   the hidden layers when they are drawn front to back.
