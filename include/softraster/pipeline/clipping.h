@@ -34,6 +34,13 @@ struct ClipVertex {
 // window coordinates, which keeps 24.8 fixed-point edge functions exact in 64-bit integers.
 inline constexpr float kGuardBandPixels = 8192.0f;
 
+// dot(q, p) summed as glm::dot sums it, for one point or, with vectors for either side,
+// several at once: every caller gets the same bits, so outcodes and the clipper agree.
+template <class Q, class P>
+auto dot4(Q qx, Q qy, Q qz, Q qw, P px, P py, P pz, P pw) {
+    return (qx * px + qy * py) + (qz * pz + qw * pw);
+}
+
 struct ClipPlanes {
     static constexpr int kCount = 6;
     std::array<glm::vec4, kCount> planes;
@@ -57,7 +64,7 @@ struct ClipPlanes {
     unsigned outcode(const glm::vec4& p) const {
         simd::f8 qx{}, qy{}, qz{}, qw{};
         for (size_t i = 0; i < size_t(kCount); ++i) qx[i] = planes[i].x, qy[i] = planes[i].y, qz[i] = planes[i].z, qw[i] = planes[i].w;
-        const simd::f8 d = (qx * p.x + qy * p.y) + (qz * p.z + qw * p.w);
+        const simd::f8 d = dot4(qx, qy, qz, qw, p.x, p.y, p.z, p.w);
         return simd::bits(d < 0.0f);
     }
 };

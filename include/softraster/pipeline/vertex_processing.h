@@ -48,8 +48,9 @@ bool finish_vertex(const ClipVertex<N>& c, const Viewport& vp, ShadedVertex<N>& 
 
 // The fixed-function part of vertex processing for eight shaded vertices at once (their
 // clip positions set): finiteness, clip outcode, perspective divide and viewport mapping,
-// each lane computed with the very operations of ClipPlanes::outcode and to_window, so the
-// results are the same bits as one vertex at a time (no contraction: CMakeLists.txt).
+// each lane computed by the helpers ClipPlanes::outcode and to_window use (dot4,
+// window_coordinates), so the results are the same bits as one vertex at a time (no
+// contraction: CMakeLists.txt).
 template <int N>
 void finish_vertices8(ShadedVertex<N>* out, const ClipPlanes& planes, const Viewport& vp) {
     using namespace simd;
@@ -64,13 +65,10 @@ void finish_vertices8(ShadedVertex<N>* out, const ClipPlanes& planes, const View
     i8 outcode{};
     for (size_t i = 0; i < size_t(ClipPlanes::kCount); ++i) {
         const glm::vec4& q = planes.planes[i];
-        const f8 d = (q.x * x + q.y * y) + (q.z * z + q.w * w);
+        const f8 d = dot4(q.x, q.y, q.z, q.w, x, y, z, w);
         outcode |= (d < 0.0f) & int32_t(1u << i);
     }
-    const f8 inv_w = 1.0f / w;
-    const f8 wx = (x * inv_w + 1.0f) * 0.5f * float(vp.width);
-    const f8 wy = (1.0f - y * inv_w) * 0.5f * float(vp.height);
-    const f8 wz = (z * inv_w + 1.0f) * 0.5f;
+    const auto [wx, wy, wz, inv_w] = window_coordinates(x, y, z, w, vp);
     const i8 mapped = (w > 0.0f) & finite(wx) & finite(wy) & finite(wz) & finite(inv_w);
     for (int l = 0; l < kLanes; ++l) {
         ShadedVertex<N>& o = out[l];

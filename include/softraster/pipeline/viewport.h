@@ -37,16 +37,21 @@ inline constexpr int64_t kSubpixelOne = int64_t(1) << kSubpixelBits;
 // Window coordinate (pixels) -> 24.8 fixed point, round to nearest.
 inline int64_t snap_to_subpixel(float v) { return int64_t(std::lrint(double(v) * double(kSubpixelOne))); }
 
+// Window x, y, z and 1/w of clip position (x, y, z, w), for one vertex (float) or eight
+// (simd::f8) with the same operations, so both give the same bits.
+template <class T>
+std::array<T, 4> window_coordinates(T x, T y, T z, T w, const Viewport& vp) {
+    const T inv_w = 1.0f / w;
+    return {(x * inv_w + 1.0f) * 0.5f * float(vp.width), (1.0f - y * inv_w) * 0.5f * float(vp.height), (z * inv_w + 1.0f) * 0.5f, inv_w};
+}
+
 // Returns false for a vertex that cannot be mapped (w <= 0 or a non-finite result); after
 // clipping this only happens with degenerate user matrices, and the primitive is dropped.
 inline bool to_window(const glm::vec4& clip, const Viewport& vp, WindowPosition& out) {
     if (!(clip.w > 0.0f)) return false;
-    const float inv_w = 1.0f / clip.w;
-    out.x = (clip.x * inv_w + 1.0f) * 0.5f * float(vp.width);
-    out.y = (1.0f - clip.y * inv_w) * 0.5f * float(vp.height);
-    out.z = (clip.z * inv_w + 1.0f) * 0.5f;
-    out.inv_w = inv_w;
-    return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z) && std::isfinite(inv_w);
+    const auto [x, y, z, inv_w] = window_coordinates(clip.x, clip.y, clip.z, clip.w, vp);
+    out = {x, y, z, inv_w};
+    return std::isfinite(x) && std::isfinite(y) && std::isfinite(z) && std::isfinite(inv_w);
 }
 
 template <int N>
