@@ -157,13 +157,13 @@ BENCHMARK(BM_Resolve)->Arg(1)->Arg(4);
 void BM_ClearTiles(benchmark::State& state) {
     std::vector<Framebuffer> fbs;
     for (int i = 0; i < 4; ++i) fbs.emplace_back(1920, 1080, int(state.range(0)));
-    Target t;
-    t.grid = TileGrid(1920, 1080);
+    DrawTarget target;
+    target.grid = TileGrid(1920, 1080);
     ClearCommand clear(glm::vec4(0.1f, 0.2f, 0.3f, 1.0f), 1.0f);
     size_t f = 0;
     for (auto _ : state) {
-        t.fb = &fbs[f++ % fbs.size()];
-        for (int tile = 0; tile < t.grid.count(); ++tile) clear.draw_tile(tile, t.grid.tile_rect(tile), t);
+        target.fb = &fbs[f++ % fbs.size()];
+        for (int tile = 0; tile < target.grid.count(); ++tile) clear.draw_tile(tile, target.grid.tile_rect(tile), target);
         benchmark::ClobberMemory();
     }
 }

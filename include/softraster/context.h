@@ -54,12 +54,19 @@ public:
     template <Shader S>
     void draw(Topology topology, const S& shader, std::span<const typename S::Vertex> vertices,
               std::span<const uint32_t> indices) {
+        if (topology == Topology::Triangles) return draw_triangles(shader, vertices, indices);
         validate_indices(indices, vertices.size(), topology);
         dispatch_samples_blend(fb_->samples(), state.blend, [&]<int Samples, BlendMode B>() {
-            if (topology == Topology::Triangles)
-                commands_.push_back(std::make_unique<TriangleCommand<S, Samples, B>>(shader, state, vertices, indices));
-            else
-                commands_.push_back(std::make_unique<LinePointCommand<S, Samples, B>>(topology, shader, state, vertices, indices));
+            commands_.push_back(std::make_unique<LinePointCommand<S, Samples, B>>(topology, shader, state, vertices, indices));
+        });
+    }
+    // The same for triangles only: a caller that draws nothing else compiles no line and
+    // point code for its shaders.
+    template <Shader S>
+    void draw_triangles(const S& shader, std::span<const typename S::Vertex> vertices, std::span<const uint32_t> indices) {
+        validate_indices(indices, vertices.size(), Topology::Triangles);
+        dispatch_samples_blend(fb_->samples(), state.blend, [&]<int Samples, BlendMode B>() {
+            commands_.push_back(std::make_unique<TriangleCommand<S, Samples, B>>(shader, state, vertices, indices));
         });
     }
 
@@ -82,12 +89,16 @@ public:
     uint64_t fragments_shaded() const { return fragments_shaded_; }  // by the last execute()
 
 private:
-    std::pair<size_t, bool> hidden_surface_run(size_t first, int tile, const Rect& rect) const;
+    void list_commands_by_tile(const TileGrid& grid);
 
     Framebuffer* fb_;
     WorkerPool* pool_;
     std::vector<uint32_t> owners_;  // per thread: the owner of each sample of its tile
     std::vector<std::unique_ptr<Command>> commands_;
+    // Each tile's commands in draw order: tile t's are tile_commands_[tile_first_[t] ..
+    // tile_first_[t + 1]). Built after binning, so a tile visits only the draws that touch it.
+    std::vector<uint32_t> tile_first_;
+    std::vector<Command*> tile_commands_;
     uint64_t fragments_shaded_ = 0;
 };
 

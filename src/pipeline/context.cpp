@@ -25,28 +25,36 @@ std::vector<std::pair<Command*, size_t>> work_items(const std::vector<std::uniqu
 
 }  // namespace
 
-std::pair<size_t, bool> Context::hidden_surface_run(size_t first, int tile, const Rect& rect) const {
-    // The longest run of commands from `first` that allow hidden-surface removal (at least
-    // the first command), and whether it is worth two passes: several draws and enough
-    // overdraw in this tile.
-    size_t end = first;
-    while (end < commands_.size() && end - first < kMaxRunDraws && commands_[end]->allows_hidden_surface_removal() &&
-           commands_[end]->triangles_in_tile(tile) < kMaxTileTriangles)
-        ++end;
-    if (end == first) return {first + 1, false};
-    if (end - first < 2) return {end, false};  // one draw: no overdraw between draws to remove
-    double area = 0;
-    for (size_t c = first; c < end; ++c) area += commands_[c]->covered_area(tile);
-    const double tile_area = double(rect.x1 - rect.x0) * double(rect.y1 - rect.y0);
-    return {end, area >= kOverdrawForHiddenSurfaceRemoval * tile_area};
+void Context::list_commands_by_tile(const TileGrid& grid) {
+    // A counting sort of (tile, command) pairs by tile, commands in draw order: a binned
+    // command in the tiles where it has triangles, any other in every tile.
+    const auto tiles = size_t(grid.count());
+    auto for_each_tile = [&](const Command& c, auto&& f) {
+        if (!c.binned()) {
+            for (size_t t = 0; t < tiles; ++t) f(t);
+            return;
+        }
+        const TileRange& r = c.tiles();
+        for (int ty = r.y0; ty < r.y1; ++ty)
+            for (int tx = r.x0; tx < r.x1; ++tx) {
+                const int t = ty * grid.tiles_x + tx;
+                if (c.triangles_in_tile(t) > 0) f(size_t(t));
+            }
+    };
+    tile_first_.assign(tiles + 1, 0);
+    for (const auto& c : commands_) for_each_tile(*c, [&](size_t t) { ++tile_first_[t + 1]; });
+    for (size_t t = 1; t <= tiles; ++t) tile_first_[t] += tile_first_[t - 1];
+    tile_commands_.resize(tile_first_[tiles]);
+    std::vector<uint32_t> cursor(tile_first_.begin(), tile_first_.end() - 1);
+    for (const auto& c : commands_) for_each_tile(*c, [&](size_t t) { tile_commands_[cursor[t]++] = c.get(); });
 }
 
 void Context::execute() {
-    Target t;
-    t.fb = fb_;
-    t.grid = TileGrid(fb_->width(), fb_->height());
-    t.planes = ClipPlanes::for_viewport(fb_->width(), fb_->height());
-    t.viewport = {fb_->width(), fb_->height()};
+    DrawTarget target;
+    target.fb = fb_;
+    target.grid = TileGrid(fb_->width(), fb_->height());
+    target.planes = ClipPlanes::for_viewport(fb_->width(), fb_->height());
+    target.viewport = {fb_->width(), fb_->height()};
     for (auto& c : commands_) c->prepare();
 
     // The front end. A small draw (one chunk of vertices, one of primitives) is one item:
@@ -57,34 +65,35 @@ void Context::execute() {
     const auto vertex_items = work_items(commands_, [&](const Command& c) { return is_small(c) ? size_t(1) : c.vertex_chunks(); });
     for_each_item(pool_, vertex_items.size(), [&](size_t i, unsigned) {
         Command& c = *vertex_items[i].first;
-        if (!is_small(c)) return c.process_vertex_chunk(vertex_items[i].second, t);
-        if (c.vertex_chunks() == 1) c.process_vertex_chunk(0, t);
-        if (c.primitive_chunks() == 1) c.bin_primitive_chunk(0, t);
+        if (!is_small(c)) return c.process_vertex_chunk(vertex_items[i].second, target);
+        if (c.vertex_chunks() == 1) c.process_vertex_chunk(0, target);
+        if (c.primitive_chunks() == 1) c.bin_primitive_chunk(0, target);
     });
     const auto bin_items = work_items(commands_, [&](const Command& c) { return is_small(c) ? size_t(0) : c.primitive_chunks(); });
-    for_each_item(pool_, bin_items.size(), [&](size_t i, unsigned) { bin_items[i].first->bin_primitive_chunk(bin_items[i].second, t); });
-    for (auto& c : commands_) c->finish_binning(t.grid);
+    for_each_item(pool_, bin_items.size(), [&](size_t i, unsigned) { bin_items[i].first->bin_primitive_chunk(bin_items[i].second, target); });
+    for (auto& c : commands_) c->finish_binning(target.grid);
+    list_commands_by_tile(target.grid);
 
-    // One thread per tile at a time, every command in order: no locks on the framebuffer.
+    // The back end: one thread per tile at a time, the tile's commands in draw order, so the
+    // framebuffer needs no locks. Runs of opaque draws with heavy overdraw are drawn in two
+    // passes (hidden_surface_removal.h); everything else one command after another.
     const unsigned threads = pool_ ? pool_->size() : 1;
+    const size_t tile_samples = size_t(kTileSize) * kTileSize * size_t(fb_->samples());
     std::vector<uint64_t> shaded(threads, 0);
-    owners_.resize(size_t(threads) * kTileSize * kTileSize * size_t(fb_->samples()));
-    for_each_item(pool_, size_t(t.grid.count()), [&](size_t tile, unsigned thread) {
-        const Rect rect = t.grid.tile_rect(int(tile));
-        uint32_t* owners = owners_.data() + size_t(thread) * kTileSize * kTileSize * size_t(fb_->samples());
-        for (size_t c = 0; c < commands_.size();) {
-            const auto [end, worth_it] = hidden_surface_run(c, int(tile), rect);
+    owners_.resize(size_t(threads) * tile_samples);
+    for_each_item(pool_, size_t(target.grid.count()), [&](size_t tile, unsigned thread) {
+        const Rect rect = target.grid.tile_rect(int(tile));
+        uint32_t* owners = owners_.data() + size_t(thread) * tile_samples;
+        const std::span<Command* const> draws(tile_commands_.data() + tile_first_[tile], tile_first_[tile + 1] - tile_first_[tile]);
+        for (size_t c = 0; c < draws.size();) {
+            const auto [end, worth_it] = hidden_surface_run(draws, c, int(tile), rect);
             if (!worth_it) {
-                for (; c < end; ++c)
-                    if (!commands_[c]->skips_tile(int(tile))) shaded[thread] += commands_[c]->draw_tile(int(tile), rect, t);
+                for (; c < end; ++c) shaded[thread] += draws[c]->draw_tile(int(tile), rect, target);
                 continue;
             }
-            std::fill_n(owners, size_t(kTileSize) * kTileSize * size_t(fb_->samples()), kNoOwner);
-            for (size_t k = c; k < end; ++k)
-                if (!commands_[k]->skips_tile(int(tile))) commands_[k]->visibility_pass(int(tile), rect, t, uint32_t(k - c), owners);
-            for (size_t k = c; k < end; ++k)
-                if (!commands_[k]->skips_tile(int(tile)))
-                    shaded[thread] += commands_[k]->shading_pass(int(tile), rect, t, uint32_t(k - c), owners);
+            std::fill_n(owners, tile_samples, kNoOwner);
+            for (size_t k = c; k < end; ++k) draws[k]->visibility_pass(int(tile), rect, target, uint32_t(k - c), owners);
+            for (size_t k = c; k < end; ++k) shaded[thread] += draws[k]->shading_pass(int(tile), rect, target, uint32_t(k - c), owners);
             c = end;
         }
     });

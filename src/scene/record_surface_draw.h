@@ -18,7 +18,7 @@ void record_surface_draw(Context& ctx, const SceneRenderer::Draw& d) {
     const std::span<const MeshVertex> vertices(d.mesh->vertices);
     const std::span<const uint32_t> indices(d.mesh->indices);
     auto draw = [&]<bool Textured, bool Colored>() {
-        ctx.draw(Topology::Triangles, SurfaceShader<M, Textured, Colored>{&d.uniforms}, vertices, indices);
+        ctx.draw_triangles(SurfaceShader<M, Textured, Colored>{&d.uniforms}, vertices, indices);
     };
     if constexpr (M == Shading::Normals || M == Shading::Depth) {
         draw.template operator()<false, false>();

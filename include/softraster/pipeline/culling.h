@@ -1,13 +1,21 @@
 // Stage 5, face culling.
 //
 // A triangle's winding is the way its corners turn in the displayed picture. Window y grows
-// downward here, so the signed area 2A = (x1-x0)(y2-y0) - (y1-y0)(x2-x0) is positive for a
-// triangle that turns clockwise on screen and negative for counter-clockwise.
-// Zero-area triangles are dropped by triangle setup, whatever the cull mode.
+// downward here, so the signed area 2A = (x1-x0)(y2-y0) - (y1-y0)(x2-x0) of the snapped
+// corners is positive for a triangle that turns clockwise on screen and negative for
+// counter-clockwise. A triangle of zero snapped area covers no sample: it is dropped here
+// too, whatever the cull mode.
 #pragma once
+#include <cstdint>
+
 #include "softraster/render_state.h"
 
 namespace softraster {
+
+// Twice the signed area of the snapped triangle: > 0 when it turns clockwise on screen.
+inline int64_t signed_area2(int64_t x0, int64_t y0, int64_t x1, int64_t y1, int64_t x2, int64_t y2) {
+    return (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);
+}
 
 inline bool is_front_facing(bool ccw_on_screen, FrontFace front) {
     return ccw_on_screen == (front == FrontFace::CCW);
@@ -20,6 +28,16 @@ inline bool is_culled(bool front_facing, CullMode cull) {
         case CullMode::Front: return front_facing;
     }
     return false;
+}
+
+struct FaceState {
+    CullMode cull = CullMode::Back;
+    FrontFace front = FrontFace::CCW;
+};
+
+// Whether a triangle of snapped signed area `area2` goes on down the pipeline.
+inline bool survives_culling(int64_t area2, FaceState faces) {
+    return area2 != 0 && !is_culled(is_front_facing(/*ccw_on_screen=*/area2 < 0, faces.front), faces.cull);
 }
 
 }  // namespace softraster

@@ -1,12 +1,16 @@
 // The recorded commands a Context executes: a clear, and draws of triangles, lines and
 // points. Each runs in three phases, every phase over all commands in parallel:
-//   1. vertex processing, in chunks of vertices;
-//   2. primitive assembly, clipping, culling and binning, in chunks of primitives
-//      (a draw of one chunk of each does 1 and 2 as one item, see Context::execute);
-//   3. per tile, in draw order: triangle setup, rasterization, fragment shading, output merge.
-// A command is one virtual call per chunk or per tile; everything per pixel inside it is a
-// template specialized for the shader, the sample count and the blend mode.
+//   1. vertex processing (vertex_processing.h), in chunks of vertices;
+//   2. primitive assembly, clipping, culling and binning (binning.h, bin_triangles), in
+//      chunks of primitives (a draw of one chunk of each does 1 and 2 as one item, see
+//      Context::execute);
+//   3. per tile, in draw order, the tile back end (tile_back_end.h): triangle setup,
+//      rasterization, depth test, fragment shading, output merge.
+// A command is a type-erased draw: one virtual call per chunk or per tile; everything per
+// pixel inside it is a template specialized for the shader, the sample count and the blend
+// mode, and each phase runs in the copy for this CPU (simd.h, on_best_path).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -15,14 +19,15 @@
 
 #include "softraster/framebuffer.h"
 #include "softraster/pipeline/binning.h"
-#include "softraster/pipeline/fragment_shading.h"
 #include "softraster/pipeline/hidden_surface_removal.h"
 #include "softraster/pipeline/line_rasterization.h"
+#include "softraster/pipeline/tile_back_end.h"
+#include "softraster/pipeline/vertex_processing.h"
 
 namespace softraster {
 
 // Where commands draw during one execution.
-struct Target {
+struct DrawTarget {
     Framebuffer* fb = nullptr;
     TileGrid grid;
     ClipPlanes planes;  // with the guard band for this viewport
@@ -35,47 +40,76 @@ public:
     // Sizes the command's buffers (sequentially, before the parallel phases).
     virtual void prepare() {}
     virtual size_t vertex_chunks() const { return 0; }
-    virtual void process_vertex_chunk(size_t, const Target&) {}
+    virtual void process_vertex_chunk(size_t, const DrawTarget&) {}
     virtual size_t primitive_chunks() const { return 0; }
-    virtual void bin_primitive_chunk(size_t, const Target&) {}
+    virtual void bin_primitive_chunk(size_t, const DrawTarget&) {}
     // After all chunks are binned (sequentially): the per-tile totals below.
     virtual void finish_binning(const TileGrid&) {}
     // Draws this command's part of one tile; returns the fragments shaded.
-    virtual uint64_t draw_tile(int tile, const Rect& rect, const Target&) = 0;
+    virtual uint64_t draw_tile(int tile, const Rect& rect, const DrawTarget&) = 0;
 
-    // A binned command with nothing in the tile: the tile loop passes it by without a call
-    // (a scene of many small objects has most of its draws absent from most tiles).
-    bool skips_tile(int tile) const { return binned() && tile_triangles_[size_t(tile)] == 0; }
-    size_t triangles_in_tile(int tile) const { return binned() ? tile_triangles_[size_t(tile)] : 0; }
+    // Commands binned by tile draw only in the tiles their triangles touch; the others
+    // (a clear, lines and points) draw in every tile.
+    bool binned() const { return binned_; }
+    const TileRange& tiles() const { return range_; }
+    size_t triangles_in_tile(int tile) const {
+        const int k = local_tile(tile);
+        return k < 0 ? 0 : tile_triangles_[size_t(k)];
+    }
     // Pixels of the tile this command's triangles cover, summed (each triangle's area, at
-    // most its bounding box within the tile): an estimate of the overdraw.
-    double covered_area(int tile) const { return binned() ? tile_area_[size_t(tile)] : 0.0; }
+    // most its bounds within the tile): an estimate of the overdraw.
+    double covered_area(int tile) const {
+        const int k = local_tile(tile);
+        return k < 0 ? 0.0 : tile_area_[size_t(k)];
+    }
 
     // Hidden-surface removal (hidden_surface_removal.h), for commands that allow it.
     bool allows_hidden_surface_removal() const { return allows_hsr_; }
-    virtual void visibility_pass(int, const Rect&, const Target&, uint32_t /*draw*/, uint32_t* /*owners*/) {}
-    virtual uint64_t shading_pass(int, const Rect&, const Target&, uint32_t /*draw*/, const uint32_t* /*owners*/) { return 0; }
+    virtual void visibility_pass(int, const Rect&, const DrawTarget&, uint32_t /*draw*/, uint32_t* /*owners*/) {}
+    virtual uint64_t shading_pass(int, const Rect&, const DrawTarget&, uint32_t /*draw*/, const uint32_t* /*owners*/) { return 0; }
 
 protected:
+    // The per-tile totals of a command binned in `bins`, over the tiles any chunk touches.
+    template <int N>
+    void sum_bins(const std::vector<TriangleBin<N>>& bins, const TileGrid& grid) {
+        binned_ = true;
+        tiles_x_ = grid.tiles_x;
+        range_ = {};
+        for (const TriangleBin<N>& bin : bins)
+            if (bin.range.count() > 0) range_.include(bin.range.x0, bin.range.y0), range_.include(bin.range.x1 - 1, bin.range.y1 - 1);
+        tile_triangles_.assign(size_t(range_.count()), 0);
+        tile_area_.assign(size_t(range_.count()), 0.0);
+        for (const TriangleBin<N>& bin : bins)
+            for (int ty = bin.range.y0; ty < bin.range.y1; ++ty)
+                for (int tx = bin.range.x0; tx < bin.range.x1; ++tx) {
+                    const auto k = size_t(range_.local(tx, ty)), b = size_t(bin.range.local(tx, ty));
+                    tile_triangles_[k] += bin.tile_begin[b + 1] - bin.tile_begin[b];
+                    tile_area_[k] += bin.covered_area[b];
+                }
+    }
+    int local_tile(int tile) const { return binned_ ? range_.local(tile % tiles_x_, tile / tiles_x_) : -1; }
+
     bool allows_hsr_ = false;
-    // Filled by finish_binning of commands binned by tile (empty for the others).
-    bool binned() const { return !tile_triangles_.empty(); }
-    std::vector<uint32_t> tile_triangles_;
+
+private:
+    bool binned_ = false;
+    int tiles_x_ = 1;
+    TileRange range_;
+    std::vector<uint32_t> tile_triangles_;  // per tile of range_
     std::vector<double> tile_area_;
 };
 
 class ClearCommand final : public Command {
 public:
     ClearCommand(const glm::vec4& color, float depth) : color_(quantize_rgba8(color)), depth_(depth) {}
-    uint64_t draw_tile(int, const Rect& r, const Target& t) override {
-        Framebuffer& fb = *t.fb;
+    uint64_t draw_tile(int, const Rect& r, const DrawTarget& target) override {
+        Framebuffer& fb = *target.fb;
         const size_t n = size_t(r.x1 - r.x0) * size_t(fb.samples());
         static_assert(sizeof(Rgba8) == sizeof(uint32_t));
         uint32_t color;  // filled as 32-bit words, which vectorizes (four bytes do not)
         std::memcpy(&color, &color_, sizeof color);
         // The tile's rows are far apart in memory, out of reach of the hardware prefetcher:
-        // ask for the rows a few ahead, or each row's writes wait for memory one after
-        // another (bench/micro BM_ClearTiles: 1.9 -> 1.3 ms at 1080p).
+        // ask for the rows a few ahead, or each row's writes wait for memory one after another.
         constexpr int kAhead = 4;
         for (int y = r.y0; y < r.y1; ++y) {
             if (y + kAhead < r.y1) {
@@ -100,6 +134,27 @@ private:
 inline constexpr size_t kVertexChunk = 16384;
 inline constexpr size_t kTriangleChunk = 8192;
 
+// Each phase's entry into the CPU dispatch, as a template of what it depends on only: the
+// vertex phase is compiled once per shader, binning once per sample count and varying
+// count, whatever the blend mode or the other shaders of the same varyings.
+namespace phases {
+template <Shader S>
+void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices, size_t begin, size_t end,
+                      const DrawTarget& target, std::span<ShadedVertex<kVaryingCount<typename S::Varyings>>> out) {
+    simd::on_best_path([&]<bool>() { softraster::process_vertices(shader, vertices, begin, end, target.planes, target.viewport, out); });
+}
+template <int Samples, int N>
+void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const DrawTarget& target, FaceState faces,
+                   TriangleBin<N>& bin) {
+    simd::on_best_path([&]<bool>() { softraster::bin_triangles<Samples>(indices, post, target.planes, target.viewport, faces, target.grid, bin); });
+}
+template <int Samples, int N>
+void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& state, Framebuffer& fb, int tx, int ty,
+                     const Rect& rect, uint32_t draw, uint32_t* owners) {
+    simd::on_best_path([&]<bool>() { softraster::visibility_pass<Samples>(triangles, state, fb, tx, ty, rect, draw, owners); });
+}
+}  // namespace phases
+
 template <Shader S, int Samples, BlendMode B>
 class TriangleCommand final : public Command {
 public:
@@ -111,235 +166,47 @@ public:
         allows_hsr_ = PureShader<S> && B == BlendMode::Opaque && softraster::allows_hidden_surface_removal(state_);
     }
 
-    size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
-    void process_vertex_chunk(size_t c, const Target& t) override {
-        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) process_vertex_chunk_avx2(c, t);
-        else process_vertex_chunk_generic(c, t);
-    }
     void prepare() override {
         post_.resize(vertices_.size());
         bins_.resize(primitive_chunks());
     }
-
+    size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
+    void process_vertex_chunk(size_t c, const DrawTarget& target) override {
+        const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
+        phases::process_vertices(shader_, vertices_, begin, end, target, std::span<ShadedVertex<N>>(post_));
+    }
     size_t primitive_chunks() const override { return (indices_.size() / 3 + kTriangleChunk - 1) / kTriangleChunk; }
-    void bin_primitive_chunk(size_t c, const Target& t) override {
-        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) bin_primitive_chunk_avx2(c, t);
-        else bin_primitive_chunk_generic(c, t);
+    void bin_primitive_chunk(size_t c, const DrawTarget& target) override {
+        const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
+        phases::bin_triangles<Samples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), target,
+                                       FaceState{state_.cull, state_.front_face}, bins_[c]);
+    }
+    void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
+
+    uint64_t draw_tile(int tile, const Rect& rect, const DrawTarget& target) override {
+        const TileBackEnd<S, Samples, B> back_end{shader_, state_, DepthTest(state_), triangles(), *target.fb};
+        const int tx = tile % target.grid.tiles_x, ty = tile / target.grid.tiles_x;
+        return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
     }
 
-    uint64_t draw_tile(int tile, const Rect& rect, const Target& t) override {
-        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) return draw_tile_avx2(tile, rect, t);
-        return draw_tile_generic(tile, rect, t);
+    void visibility_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, uint32_t* owners) override {
+        if constexpr (B == BlendMode::Opaque && PureShader<S>)
+            phases::visibility_pass<Samples>(triangles(), state_, *target.fb, tile % target.grid.tiles_x,
+                                             tile / target.grid.tiles_x, rect, draw, owners);
     }
-
-    void finish_binning(const TileGrid& grid) override {
-        tile_triangles_.assign(size_t(grid.count()), 0);
-        tile_area_.assign(size_t(grid.count()), 0.0);
-        for (const TriangleBin<N>& bin : bins_)
-            for (size_t tile = 0; tile < tile_triangles_.size(); ++tile) {
-                tile_triangles_[tile] += bin.tile_begin[tile + 1] - bin.tile_begin[tile];
-                tile_area_[tile] += bin.covered_area[tile];
-            }
-    }
-    void visibility_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) override {
-        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) visibility_avx2(tile, rect, t, draw, owners);
-        else visibility_generic(tile, rect, t, draw, owners);
-    }
-    uint64_t shading_pass(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) override {
-        if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) return shading_avx2(tile, rect, t, draw, owners);
-        return shading_generic(tile, rect, t, draw, owners);
+    uint64_t shading_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, const uint32_t* owners) override {
+        if constexpr (B == BlendMode::Opaque && PureShader<S>) {
+            const int tx = tile % target.grid.tiles_x, ty = tile / target.grid.tiles_x;
+            return simd::on_best_path([&]<bool>() {
+                return softraster::shading_pass<Samples>(shader_, triangles(), state_, *target.fb, tx, ty, rect, draw, owners);
+            });
+        }
+        return 0;
     }
 
 private:
-    SOFTRASTER_AVX2_TARGET void visibility_avx2(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) {
-        visibility_body(tile, rect, t, draw, owners);
-    }
-    SOFTRASTER_FLATTEN void visibility_generic(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) {
-        visibility_body(tile, rect, t, draw, owners);
-    }
-    SOFTRASTER_AVX2_TARGET uint64_t shading_avx2(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) {
-        return shading_body(tile, rect, t, draw, owners);
-    }
-    SOFTRASTER_FLATTEN uint64_t shading_generic(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) {
-        return shading_body(tile, rect, t, draw, owners);
-    }
+    BinnedTriangles<N> triangles() const { return {std::span<const TriangleBin<N>>(bins_), post_.data()}; }
 
-    // The front end, like the back end, twice: for any x86-64 and with AVX2 (same bits).
-    SOFTRASTER_AVX2_TARGET void process_vertex_chunk_avx2(size_t c, const Target& t) { process_vertex_chunk_body(c, t); }
-    SOFTRASTER_FLATTEN void process_vertex_chunk_generic(size_t c, const Target& t) { process_vertex_chunk_body(c, t); }
-    void process_vertex_chunk_body(size_t c, const Target& t) {
-        const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
-        process_vertices(shader_, vertices_, begin, end, t.planes, t.viewport, std::span<ShadedVertex<N>>(post_));
-    }
-    SOFTRASTER_AVX2_TARGET void bin_primitive_chunk_avx2(size_t c, const Target& t) { bin_primitive_chunk_body(c, t); }
-    SOFTRASTER_FLATTEN void bin_primitive_chunk_generic(size_t c, const Target& t) { bin_primitive_chunk_body(c, t); }
-    void bin_primitive_chunk_body(size_t c, const Target& t) {
-        const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
-        bin_triangles<Samples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), t.planes, t.viewport,
-                      FaceState{state_.cull, state_.front_face}, t.grid, bins_[c]);
-    }
-
-    // Pass 1: depth test and write, and the owner of every sample that passes.
-    void visibility_body(int tile, const Rect& rect, const Target& t, uint32_t draw, uint32_t* owners) {
-        Framebuffer& fb = *t.fb;
-        const int width = fb.width();
-        for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
-            const uint32_t me = owner_id(draw, id);
-            if constexpr (Samples == 1) {  // eight pixels at a time
-                using namespace simd;
-                rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
-                    float* depth = fb.depth_data() + fb.sample_index(0, y);
-                    int32_t* owner = reinterpret_cast<int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
-                    const f8 j = splat(float(y - setup.origin_y));
-                    for_each_group(x_begin, x_end, [&](int x, i8 pass) {
-                        const f8 z = interpolate_depth(setup, to_float(kLaneIndex) + float(x - setup.origin_x), j);
-                        const f8 stored = load_group<f8>(depth, x, width);
-                        pass &= depth_passes(state_.depth_func, z, stored);
-                        store_group(depth, x, width, select(pass, z, stored));
-                        const int ox = x - rect.x0, ow = width - rect.x0;
-                        store_group(owner, ox, ow, select(pass, splat_i(int32_t(me)), load_group<i8>(owner, ox, ow)));
-                    });
-                });
-                return;
-            }
-            rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
-                float* depth = fb.depth_data() + fb.sample_index(px.x, px.y);
-                uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
-                for (int s = 0; s < Samples; ++s)
-                    if ((px.mask & (1u << s)) && depth_passes(state_.depth_func, px.z[size_t(s)], depth[s])) {
-                        depth[s] = px.z[size_t(s)];
-                        owner[s] = me;
-                    }
-            });
-        });
-    }
-
-    // Pass 2: shade each pixel for the triangle that owns some of its samples.
-    uint64_t shading_body(int tile, const Rect& rect, const Target& t, uint32_t draw, const uint32_t* owners) {
-        using V = typename S::Varyings;
-        Framebuffer& fb = *t.fb;
-        const int width = fb.width();
-        uint64_t shaded = 0;
-        for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
-            const uint32_t me = owner_id(draw, id);
-            if constexpr (Samples == 1 && BatchShader<S>) {  // eight pixels at a time
-                using namespace simd;
-                rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
-                    const int32_t* owner = reinterpret_cast<const int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
-                    Rgba8* color = fb.color_data() + fb.sample_index(0, y);
-                    const f8 j = splat(float(y - setup.origin_y));
-                    for_each_group(x_begin, x_end, [&](int x, i8 lanes) {
-                        const i8 mine = lanes & (load_group<i8>(owner, x - rect.x0, width - rect.x0) == int32_t(me));
-                        if (!any(mine)) return;
-                        const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
-                        std::array<f8, 4> rgba;
-                        shader_.fragment_batch(interpolate_perspective(setup, i, j), interpolate_depth(setup, i, j), setup.front_facing, rgba);
-                        shaded += unsigned(__builtin_popcount(bits(mine)));
-                        blend_group<BlendMode::Opaque>(color, x, width, mine, rgba);
-                    });
-                });
-                return;
-            }
-            rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
-                const uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
-                unsigned mine = 0;
-                for (int s = 0; s < Samples; ++s)
-                    if ((px.mask & (1u << s)) && owner[s] == me) mine |= 1u << s;
-                if (!mine) return;
-                const float i = float(px.x - setup.origin_x), j = float(px.y - setup.origin_y);
-                const V v = from_array<V>(interpolate_perspective(setup, i, j));
-                glm::vec4 color;
-                shader_.fragment(v, FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
-                ++shaded;
-                const Rgba8 c = quantize_rgba8(color);
-                Rgba8* dst = fb.color_data() + fb.sample_index(px.x, px.y);
-                for (int s = 0; s < Samples; ++s)
-                    if (mine & (1u << s)) dst[s] = c;
-            });
-        });
-        return shaded;
-    }
-
-    // Draws that shade through the fragment queue: opaque, with a shader that never discards.
-    static constexpr bool kQueued = BatchShader<S> && PureShader<S> && B == BlendMode::Opaque;
-    // A triangle at least this big in the tile is shaded directly, row group by row group.
-    static bool is_large(const Rect& r) { return (r.x1 - r.x0) >= 32 && (r.y1 - r.y0) >= 16; }
-
-    // The same code twice: once for any x86-64, once with AVX2 allowed, where eight-lane
-    // vectors are one register. Everything it calls is inlined into each (flatten).
-    SOFTRASTER_AVX2_TARGET uint64_t draw_tile_avx2(int tile, const Rect& rect, const Target& t) {
-        return draw_tile_body</*wide_lanes=*/true>(tile, rect, t);
-    }
-    SOFTRASTER_FLATTEN uint64_t draw_tile_generic(int tile, const Rect& rect, const Target& t) {
-        return draw_tile_body</*wide_lanes=*/false>(tile, rect, t);
-    }
-    // Eight pixels at a time where the shader can (single-sampled); without wide vector
-    // registers only for triangles wide enough to fill the lanes.
-    template <bool WideLanes>
-    uint64_t draw_tile_body(int tile, const Rect& rect, const Target& t) {
-        uint64_t shaded = 0;
-        if constexpr (kQueued) {
-            if (state_.color_write && triangles_in_tile(tile) > 0) {  // small triangles shaded in full groups of eight (fragment_queue.h)
-                // One queue per thread, off the stack: a few kilobytes that would otherwise
-                // sit among the tile loop's spilled registers.
-                static thread_local FragmentQueue<S, Samples> queue;
-                queue.start(shader_, *t.fb);
-                for_each_setup</*planes=*/false>(tile, rect, [&](TriangleSetup<N>& setup, uint32_t) {
-                    if (Samples == 1 && is_large(setup.bounds)) {  // its groups are full anyway
-                        queue.flush();
-                        setup_planes(setup);
-                        shaded += draw_triangle_batched<B>(shader_, state_, *t.fb, setup);
-                    } else {
-                        shaded += queue_triangle<Samples>(state_, *t.fb, setup, queue);  // makes the planes if needed
-                    }
-                });
-                queue.flush();
-                return shaded;
-            }
-        }
-        for_each_setup(tile, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
-            if constexpr (Samples == 1 && BatchShader<S>) {
-                if (WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {
-                    shaded += draw_triangle_batched<B>(shader_, state_, *t.fb, setup);
-                    return;
-                }
-            }
-            shaded += draw_triangle<Samples, B>(shader_, state_, *t.fb, setup);
-        });
-        return shaded;
-    }
-
-    // Calls f(setup, ordinal) for each of the tile's triangles in draw order; the ordinal
-    // counts the tile's triangles of this draw (the owner id of hidden-surface removal).
-    // Without Planes, the setup has its coverage only (f makes the planes when it needs them).
-    template <bool Planes = true, class F>
-    void for_each_setup(int tile, const Rect& rect, F&& f) const {
-        TriangleSetup<N> setup;
-        uint32_t ordinal = 0;
-        // Setup reads the window position and varyings of three vertices anywhere in the
-        // draw's vertex buffer: fetch those of a triangle a few places ahead into the cache
-        // while this one is drawn, or the loads wait on memory (a tile revisits every draw).
-        constexpr uint32_t kAhead = 4;
-        auto prefetch = [&](const TriangleBin<N>& bin, const TriangleRef& r) {
-            for (uint32_t i : r.v) {
-                const ShadedVertex<N>& v = bin.vertex(i, post_.data());
-                __builtin_prefetch(&v);  // at most two cache lines
-                __builtin_prefetch(reinterpret_cast<const char*>(&v + 1) - 1);
-            }
-        };
-        for (const TriangleBin<N>& bin : bins_)
-            for (uint32_t k = bin.tile_begin[size_t(tile)], end = bin.tile_begin[size_t(tile) + 1]; k < end; ++k, ++ordinal) {
-                if (k == bin.tile_begin[size_t(tile)])
-                    for (uint32_t a = k + 1; a < std::min(end, k + kAhead); ++a) prefetch(bin, bin.refs[a]);
-                if (k + kAhead < end) prefetch(bin, bin.refs[k + kAhead]);
-                const TriangleRef& r = bin.refs[k];
-                if (setup_coverage<Samples>(bin.vertex(r.v[0], post_.data()), bin.vertex(r.v[1], post_.data()),
-                                   bin.vertex(r.v[2], post_.data()), state_.front_face, rect, setup)) {
-                    if constexpr (Planes) setup_planes(setup);
-                    f(setup, ordinal);
-                }
-            }
-    }
     S shader_;
     RenderState state_;
     std::span<const Vertex> vertices_;
@@ -361,30 +228,22 @@ public:
         : topology_(topology), shader_(shader), state_(state), vertices_(vertices), indices_(indices) {}
 
     size_t primitive_chunks() const override { return 1; }
-    void bin_primitive_chunk(size_t, const Target& t) override {
+    void bin_primitive_chunk(size_t, const DrawTarget& target) override {
         std::vector<ShadedVertex<N>> post(vertices_.size());
-        process_vertices(shader_, vertices_, 0, vertices_.size(), t.planes, t.viewport, std::span<ShadedVertex<N>>(post));
+        process_vertices(shader_, vertices_, 0, vertices_.size(), target.planes, target.viewport, std::span<ShadedVertex<N>>(post));
         window_.clear();
-        const ClipPlanes frustum = ClipPlanes::frustum();
-        const size_t per = topology_ == Topology::Lines ? 2 : 1;
-        for (size_t i = 0; i + per <= indices_.size(); i += per) {
-            ClipVertex<N> a = post[indices_[i]].clip, b = post[indices_[i + per - 1]].clip;
-            if (!post[indices_[i]].finite || !post[indices_[i + per - 1]].finite) continue;
-            if (per == 2 ? !clip_line(a, b, frustum) : frustum.outcode(a.position) != 0) continue;
-            WindowVertex<N> wa, wb;
-            if (!to_window(a, t.viewport, wa) || !to_window(b, t.viewport, wb)) continue;
-            window_.push_back(wa);
-            if (per == 2) window_.push_back(wb);
-        }
+        assemble_lines_points(topology_, indices_, post.data(), target.viewport, window_);
     }
 
-    uint64_t draw_tile(int, const Rect& rect, const Target& t) override {
+    uint64_t draw_tile(int, const Rect& rect, const DrawTarget& target) override {
         using V = typename S::Varyings;
+        const DepthTest depth(state_);
         uint64_t shaded = 0;
         auto fragment = [&](int x, int y, float z, auto&& make_varyings) {
             std::array<float, Samples> zs;
             zs.fill(z);
-            shade_fragment<Samples, B>(shader_, state_, *t.fb, x, y, (1u << Samples) - 1, zs.data(), z, true, make_varyings, shaded);
+            shade_fragment<Samples, B>(shader_, depth, state_.color_write, *target.fb, x, y, (1u << Samples) - 1, zs.data(), z,
+                                       true, make_varyings, shaded);
         };
         if (topology_ == Topology::Points) {
             for (const WindowVertex<N>& p : window_)

@@ -10,17 +10,19 @@
 // The picture is identical: with depth writes on, the last fragment to pass a sample's
 // depth test is the one whose color stays there, and a triangle's color at a pixel does
 // not depend on the order it is computed in. It needs shaders that never discard and
-// have no side effects, which a shader states with `static constexpr bool kPure = true;`.
+// have no side effects (PureShader, fragment_shading.h).
+//
+// The tile loop (Context::execute) asks hidden_surface_run which run of the tile's draws to
+// draw this way; the draws' commands then call the two passes below.
 #pragma once
 #include <cstdint>
+#include <span>
 
-#include "softraster/pipeline/shader.h"
+#include "softraster/framebuffer.h"
+#include "softraster/pipeline/tile_back_end.h"
 #include "softraster/render_state.h"
 
 namespace softraster {
-
-template <class S>
-concept PureShader = requires { requires S::kPure; };
 
 // Draw state that allows the two-pass scheme.
 inline bool allows_hidden_surface_removal(const RenderState& st) {
@@ -28,7 +30,7 @@ inline bool allows_hidden_surface_removal(const RenderState& st) {
            st.depth_func != DepthFunc::Never;
 }
 
-// A run is worth two passes when its triangles' boxes cover the tile this many times over.
+// A run is worth two passes when its triangles' bounds cover the tile this many times over.
 inline constexpr double kOverdrawForHiddenSurfaceRemoval = 2.5;
 
 // Owner of a sample: draw (within the run) in the top 8 bits, triangle (within the draw's
@@ -36,5 +38,106 @@ inline constexpr double kOverdrawForHiddenSurfaceRemoval = 2.5;
 inline constexpr uint32_t kNoOwner = 0xffffffffu;
 inline uint32_t owner_id(uint32_t draw, uint32_t triangle) { return (draw << 24) | triangle; }
 inline constexpr uint32_t kMaxRunDraws = 255, kMaxTileTriangles = 1u << 24;
+
+struct HiddenSurfaceRun {
+    size_t end;      // the run is draws [first, end) of the tile's list
+    bool worth_it;   // draw it in two passes (else one draw after another)
+};
+
+// The longest run of the tile's draws from `first` that allow hidden-surface removal, and
+// whether it is worth two passes: several draws, and enough overdraw in this tile. `draws`
+// are the tile's commands in draw order (pointers with allows_hidden_surface_removal(),
+// triangles_in_tile(tile) and covered_area(tile)).
+template <class DrawPtr>
+HiddenSurfaceRun hidden_surface_run(std::span<const DrawPtr> draws, size_t first, int tile, const Rect& rect) {
+    size_t end = first;
+    while (end < draws.size() && end - first < kMaxRunDraws && draws[end]->allows_hidden_surface_removal() &&
+           draws[end]->triangles_in_tile(tile) < kMaxTileTriangles)
+        ++end;
+    if (end == first) return {first + 1, false};
+    if (end - first < 2) return {end, false};  // one draw: no overdraw between draws to remove
+    double area = 0;
+    for (size_t c = first; c < end; ++c) area += draws[c]->covered_area(tile);
+    const double tile_area = double(rect.x1 - rect.x0) * double(rect.y1 - rect.y0);
+    return {end, area >= kOverdrawForHiddenSurfaceRemoval * tile_area};
+}
+
+// Pass 1: depth test and write, and the owner of every sample that passes. `owners` holds
+// the tile's samples, row by row (kTileSize pixels a row, Samples per pixel).
+template <int Samples, int N>
+void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& state, Framebuffer& fb, int tx, int ty,
+                     const Rect& rect, uint32_t draw, uint32_t* owners) {
+    const DepthTest depth(state);
+    const int width = fb.width();
+    for_each_triangle_setup<Samples>(triangles, state.front_face, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
+        const uint32_t me = owner_id(draw, id);
+        if constexpr (Samples == 1) {  // eight pixels at a time
+            using namespace simd;
+            rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
+                int32_t* owner = reinterpret_cast<int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
+                const f8 j = splat(float(y - setup.origin_y));
+                for_each_group(x_begin, x_end, [&](int x, i8 covered) {
+                    const f8 z = interpolate_depth(setup, to_float(kLaneIndex) + float(x - setup.origin_x), j);
+                    const i8 pass = depth.test_group(fb.depth_data() + fb.sample_index(0, y), x, width, z, covered);
+                    const int ox = x - rect.x0, ow = width - rect.x0;
+                    store_group(owner, ox, ow, select(pass, splat_i(int32_t(me)), load_group<i8>(owner, ox, ow)));
+                });
+            });
+        } else {
+            rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
+                uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
+                const unsigned pass = depth.template test_and_write_pixel<Samples>(fb.depth_data() + fb.sample_index(px.x, px.y), px.mask, px.z.data());
+                for (int s = 0; s < Samples; ++s)
+                    if (pass & (1u << s)) owner[s] = me;
+            });
+        }
+    });
+}
+
+// Pass 2: shade each pixel for the triangle that owns some of its samples, and write those.
+// Returns the fragments shaded.
+template <int Samples, Shader S>
+uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typename S::Varyings>>& triangles,
+                      const RenderState& state, Framebuffer& fb, int tx, int ty, const Rect& rect, uint32_t draw,
+                      const uint32_t* owners) {
+    constexpr int N = kVaryingCount<typename S::Varyings>;
+    using V = typename S::Varyings;
+    const int width = fb.width();
+    uint64_t shaded = 0;
+    for_each_triangle_setup<Samples>(triangles, state.front_face, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
+        const uint32_t me = owner_id(draw, id);
+        if constexpr (Samples == 1 && BatchShader<S>) {  // eight pixels at a time
+            using namespace simd;
+            rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
+                const int32_t* owner = reinterpret_cast<const int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
+                Rgba8* color = fb.color_data() + fb.sample_index(0, y);
+                const f8 j = splat(float(y - setup.origin_y));
+                for_each_group(x_begin, x_end, [&](int x, i8 lanes) {
+                    const i8 mine = lanes & (load_group<i8>(owner, x - rect.x0, width - rect.x0) == int32_t(me));
+                    if (!any(mine)) return;
+                    const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
+                    shaded += unsigned(__builtin_popcount(bits(mine)));
+                    shade_group<BlendMode::Opaque>(shader, color, x, width, mine, interpolate_perspective(setup, i, j),
+                                                   interpolate_depth(setup, i, j), setup.front_facing);
+                });
+            });
+        } else {
+            rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
+                const uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
+                unsigned mine = 0;
+                for (int s = 0; s < Samples; ++s)
+                    if ((px.mask & (1u << s)) && owner[s] == me) mine |= 1u << s;
+                if (!mine) return;
+                const float i = float(px.x - setup.origin_x), j = float(px.y - setup.origin_y);
+                const V v = from_array<V>(interpolate_perspective(setup, i, j));
+                glm::vec4 color;
+                shader.fragment(v, FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
+                ++shaded;
+                merge_fragment<Samples, BlendMode::Opaque>(fb.color_data() + fb.sample_index(px.x, px.y), mine, color);
+            });
+        }
+    });
+    return shaded;
+}
 
 }  // namespace softraster

@@ -1,4 +1,5 @@
-// Stage 9, output merge: the per-sample depth test, blending and the color write.
+// Stage 9b, output merge: blending and the color write (the depth test before it is
+// depth_stencil.h).
 //
 // Color is stored as 8-bit RGBA. Blending follows the spec's formulas on the stored 8-bit
 // destination, in 8-bit fixed point as llvmpipe and GPUs do it for RGBA8 targets: the source
@@ -19,24 +20,6 @@
 #include "softraster/render_state.h"
 
 namespace softraster {
-
-// z against the stored depth, for one sample (float -> bool) or eight (f8 -> lane mask).
-template <class T>
-inline auto depth_passes(DepthFunc f, T z, T stored) -> decltype(z < stored) {
-    using Mask = decltype(z < stored);
-    switch (f) {
-        case DepthFunc::Never: return Mask{};
-        case DepthFunc::Less: return z < stored;
-        case DepthFunc::Equal: return z == stored;
-        case DepthFunc::LessEqual: return z <= stored;
-        case DepthFunc::Greater: return z > stored;
-        case DepthFunc::NotEqual: return z != stored;
-        case DepthFunc::GreaterEqual: return z >= stored;
-        case DepthFunc::Always: return Mask((z == z) | (z != z));  // true in every lane, NaN too
-    }
-    return Mask{};
-}
-
 
 // x * y / 255 for 8-bit x, y, rounded to nearest: the exact unorm8 product that GPUs and
 // llvmpipe use ((t + 128 + ((t + 128) >> 8)) >> 8 with t = x * y, Blinn 1995).
@@ -62,28 +45,14 @@ inline Rgba8 blend(const glm::vec4& src, Rgba8 dst) {
     }
 }
 
-// Depth test of the covered samples of one pixel; returns the samples that pass.
-template <int Samples>
-inline unsigned depth_test(const RenderState& st, const float* stored, unsigned covered, const float* z) {
-    if (!st.depth_test) return covered;
-    unsigned pass = 0;
-    for (int s = 0; s < Samples; ++s)
-        if ((covered & (1u << s)) && depth_passes(st.depth_func, z[s], stored[s])) pass |= 1u << s;
-    return pass;
-}
-
-// Writes one shaded fragment to the samples in `mask` (which passed the depth test).
+// Writes one shaded fragment's color to the samples in `mask` of a pixel.
 template <int Samples, BlendMode B>
-inline void merge_fragment(const RenderState& st, Rgba8* color, float* depth, unsigned mask, const float* z,
-                           const glm::vec4& src) {
-    for (int s = 0; s < Samples; ++s) {
-        if (!(mask & (1u << s))) continue;
-        if (st.depth_test && st.depth_write) depth[s] = z[s];
-        if (st.color_write) color[s] = blend<B>(src, color[s]);
-    }
+inline void merge_fragment(Rgba8* color, unsigned mask, const glm::vec4& src) {
+    for (int s = 0; s < Samples; ++s)
+        if (mask & (1u << s)) color[s] = blend<B>(src, color[s]);
 }
 
-// ---- eight pixels of a row at once (see fragment_shading.h)
+// ---- eight pixels of a row at once (see tile_back_end.h)
 
 inline simd::i8 mul_unorm8(simd::i8 x, simd::i8 y) {
     const simd::i8 t = x * y + 128;

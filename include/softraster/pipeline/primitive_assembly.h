@@ -1,18 +1,26 @@
 // Stage 2, primitive assembly: group post-transform vertices into triangles, lines, points.
 //
-// Index buffers are checked once, up front; a primitive with a non-finite clip coordinate
-// (a NaN or infinite input position) is dropped here, before it can poison clipping or setup.
+// Index buffers are checked once, up front (validate_indices). A primitive with a
+// non-finite clip coordinate (a NaN or infinite input position) is dropped here, before it
+// can poison clipping or setup; one wholly outside a clip plane too. One that crosses a
+// plane goes through the clipper (clipping.h), whose new vertices are mapped to window
+// space (viewport.h) and kept beside the post-transform buffer: a triangle's corner is an
+// index into one or the other.
 #pragma once
 #include <cmath>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <vector>
 
 #include <glm/vec4.hpp>
 
-namespace softraster {
+#include "softraster/pipeline/clipping.h"
+#include "softraster/pipeline/pipeline_types.h"
+#include "softraster/pipeline/vertex_processing.h"
+#include "softraster/pipeline/viewport.h"
 
-enum class Topology { Triangles, Lines, Points };
+namespace softraster {
 
 inline int vertices_per_primitive(Topology t) {
     return t == Topology::Triangles ? 3 : t == Topology::Lines ? 2 : 1;
@@ -25,8 +33,69 @@ inline void validate_indices(std::span<const uint32_t> indices, size_t vertex_co
         if (i >= vertex_count) throw std::out_of_range("index past the end of the vertex buffer");
 }
 
-inline bool is_finite(const glm::vec4& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+// A corner flagged with kClippedVertex indexes the clipper's output, otherwise the
+// post-transform buffer.
+inline constexpr uint32_t kClippedVertex = 0x80000000u;
+
+template <int N>
+const ShadedVertex<N>& corner_vertex(uint32_t i, const ShadedVertex<N>* post, const std::vector<ShadedVertex<N>>& clipped) {
+    return (i & kClippedVertex) ? clipped[i & ~kClippedVertex] : post[i];
+}
+
+// Assembles the triangles of `indices` (three per triangle) in order and calls
+// emit(ia, ib, ic) with the corners of each that may be visible: as it is when it lies
+// inside every plane, else as the fan (0, k, k+1) of its clipped polygon, whose vertices are
+// appended to `clipped`. The clipper runs against `planes` (near, far, guard band).
+template <int N, class Emit>
+void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
+                        const Viewport& vp, std::vector<ShadedVertex<N>>& clipped, Emit&& emit) {
+    ClipPolygon<N> poly;
+    for (size_t i = 0; i + 2 < indices.size(); i += 3) {
+        const uint32_t ia = indices[i], ib = indices[i + 1], ic = indices[i + 2];
+        const ShadedVertex<N>&a = post[ia], &b = post[ib], &c = post[ic];
+        if (!a.finite || !b.finite || !c.finite) continue;  // NaN or infinite position
+        if (a.outcode & b.outcode & c.outcode) continue;     // all outside one plane
+        const unsigned mask = a.outcode | b.outcode | c.outcode;
+        if (mask == 0) {
+            emit(ia, ib, ic);
+            continue;
+        }
+        const int n = clip_triangle(a.clip, b.clip, c.clip, planes, mask, poly);
+        const auto first = uint32_t(clipped.size());
+        int mapped = 0;
+        for (int k = 0; k < n; ++k) {
+            ShadedVertex<N> v;
+            if (!finish_vertex(poly.v[size_t(k)], vp, v)) break;
+            clipped.push_back(v);
+            ++mapped;
+        }
+        if (mapped != n) {  // a degenerate user matrix: the triangle is dropped
+            clipped.resize(first);
+            continue;
+        }
+        for (int k = 1; k + 1 < n; ++k)
+            emit(first | kClippedVertex, (first + uint32_t(k)) | kClippedVertex, (first + uint32_t(k) + 1) | kClippedVertex);
+    }
+}
+
+// Assembles lines (two indices each) or points (one each), clips them to the exact view
+// volume (Liang–Barsky for lines; a point is kept when inside) and appends their window
+// vertices to `out`, two per line, one per point.
+template <int N>
+void assemble_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post,
+                           const Viewport& vp, std::vector<WindowVertex<N>>& out) {
+    const ClipPlanes frustum = ClipPlanes::frustum();
+    const size_t per = topology == Topology::Lines ? 2 : 1;
+    for (size_t i = 0; i + per <= indices.size(); i += per) {
+        const ShadedVertex<N>&first = post[indices[i]], &last = post[indices[i + per - 1]];
+        if (!first.finite || !last.finite) continue;
+        ClipVertex<N> a = first.clip, b = last.clip;
+        if (per == 2 ? !clip_line(a, b, frustum) : frustum.outcode(a.position) != 0) continue;
+        WindowVertex<N> wa, wb;
+        if (!to_window(a, vp, wa) || !to_window(b, vp, wb)) continue;
+        out.push_back(wa);
+        if (per == 2) out.push_back(wb);
+    }
 }
 
 }  // namespace softraster

@@ -1,9 +1,12 @@
 // Where a pixel is sampled: at its center, or with 4x MSAA at the four positions of the
-// spec's rotated-grid pattern. Rasterization tests these points; triangle setup and binning
-// use their extent to bound the pixels a triangle can cover.
+// spec's rotated-grid pattern. Rasterization tests these points; binning and triangle setup
+// use their extent to bound the pixels a triangle can cover (pixel_bounds).
 #pragma once
 #include <algorithm>
 #include <array>
+
+#include "softraster/pipeline/pipeline_types.h"
+#include "softraster/pipeline/viewport.h"
 
 namespace softraster {
 
@@ -28,6 +31,21 @@ constexpr SampleExtent sample_extent() {
     using P = SamplePattern<Samples>;
     return {*std::min_element(P::x.begin(), P::x.end()), *std::max_element(P::x.begin(), P::x.end()),
             *std::min_element(P::y.begin(), P::y.end()), *std::max_element(P::y.begin(), P::y.end())};
+}
+
+// Pixels with a sample inside the bounding box [m, M] of a snapped triangle (corners with
+// 24.8 fixed-point X, Y): pixel i has its samples at 256 i + s with s in [lo, hi], so one
+// may be inside only if 256 i + hi >= m and 256 i + lo <= M, i.e.
+// ceil((m - hi) / 256) <= i <= floor((M - lo) / 256). Empty for most triangles of a mesh
+// finer than the pixels: they fall between the samples and are dropped in binning.
+template <int Samples, class V>
+inline Rect pixel_bounds(const V& a, const V& b, const V& c) {
+    constexpr SampleExtent s = sample_extent<Samples>();
+    constexpr int kRoundUp = int(kSubpixelOne) - 1;
+    return {(std::min({a.X, b.X, c.X}) - s.x_hi + kRoundUp) >> kSubpixelBits,
+            (std::min({a.Y, b.Y, c.Y}) - s.y_hi + kRoundUp) >> kSubpixelBits,
+            ((std::max({a.X, b.X, c.X}) - s.x_lo) >> kSubpixelBits) + 1,
+            ((std::max({a.Y, b.Y, c.Y}) - s.y_lo) >> kSubpixelBits) + 1};
 }
 
 }  // namespace softraster

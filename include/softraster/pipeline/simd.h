@@ -13,8 +13,8 @@ namespace softraster::simd {
 
 inline constexpr int kLanes = 8;
 
-// Whether this CPU runs AVX2 and FMA code: the back end then takes its AVX2 path
-// (draw_commands.h), compiled from the same source with those instructions allowed.
+// Whether this CPU runs AVX2 and FMA code: the pipeline then takes its AVX2 path
+// (on_best_path below), compiled from the same source with those instructions allowed.
 // FMA contraction is off (-ffp-contract=off in CMakeLists.txt), so both paths compute
 // the same bits and the picture does not depend on the CPU.
 // SOFTRASTER_GENERIC=1 in the environment, or use_generic_path(true), forces the other path.
@@ -32,8 +32,11 @@ inline bool cpu_has_avx2() {
 #endif
 }
 
-// flatten: everything the tile loop calls is inlined into it, so the AVX2 copy really is
-// AVX2 code throughout (off in sanitizer builds, which it makes very slow to compile).
+// The AVX2 copy: flatten inlines everything the entry point calls, so the whole loop nest
+// really is AVX2 code (a call into an ordinary function would leave it for SSE code). Off in
+// sanitizer builds, which it makes very slow to compile. The generic copy is compiled as
+// usual: forcing everything inline there costs build time and buys little on CPUs old
+// enough to take it.
 #ifdef SOFTRASTER_NO_FLATTEN
 #define SOFTRASTER_FLATTEN
 #else
@@ -43,9 +46,28 @@ inline bool cpu_has_avx2() {
 #define SOFTRASTER_AVX2_TARGET [[gnu::target("avx2,fma")]] SOFTRASTER_FLATTEN
 #define SOFTRASTER_HAS_AVX2_PATH 1
 #else
-#define SOFTRASTER_AVX2_TARGET SOFTRASTER_FLATTEN
+#define SOFTRASTER_AVX2_TARGET
 #define SOFTRASTER_HAS_AVX2_PATH 0
 #endif
+
+// The CPU dispatch, the one place that chooses between the two copies: runs
+// f.template operator()<WideLanes>() compiled with AVX2 (WideLanes = true) when the CPU has
+// it, else compiled for any x86-64 (false). f is a generic lambda; each caller's lambda is
+// compiled twice, once in each copy.
+template <class F>
+SOFTRASTER_AVX2_TARGET auto run_avx2(const F& f) {
+    return f.template operator()<true>();
+}
+template <class F>
+auto run_generic(const F& f) {
+    return f.template operator()<false>();
+}
+template <class F>
+auto on_best_path(const F& f) {
+    if (SOFTRASTER_HAS_AVX2_PATH && cpu_has_avx2()) return run_avx2(f);
+    return run_generic(f);
+}
+
 using f8 = float __attribute__((vector_size(32)));
 using i8 = int32_t __attribute__((vector_size(32)));  // also the result of comparisons: -1 true, 0 false
 

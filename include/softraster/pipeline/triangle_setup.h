@@ -28,16 +28,12 @@
 #include <utility>
 
 #include "softraster/pipeline/culling.h"
+#include "softraster/pipeline/pipeline_types.h"
 #include "softraster/pipeline/sample_pattern.h"
 #include "softraster/pipeline/vertex_processing.h"
 #include "softraster/render_state.h"
 
 namespace softraster {
-
-// Half-open pixel rectangle [x0, x1) x [y0, y1): the viewport, or a tile of it.
-struct Rect {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-};
 
 // An attribute's plane, relative to the center of the rectangle's first pixel (i, j = 0).
 struct Plane {
@@ -46,26 +42,6 @@ struct Plane {
     template <class T>
     T at(T i, T j) const { return a0 + dadx * i + dady * j; }
 };
-
-// Twice the signed area of the snapped triangle: > 0 when it turns clockwise on screen.
-inline int64_t signed_area2(int64_t x0, int64_t y0, int64_t x1, int64_t y1, int64_t x2, int64_t y2) {
-    return (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);
-}
-
-// Pixels with a sample inside the bounding box [m, M] of the snapped triangle: pixel i has
-// its samples at 256 i + s with s in [lo, hi] (sample_pattern.h), so one may be inside only if
-// 256 i + hi >= m and 256 i + lo <= M, i.e. ceil((m - hi) / 256) <= i <= floor((M - lo) / 256).
-// Empty for most triangles of a mesh finer than the pixels: they fall between the samples
-// and are dropped here, before binning stores them.
-template <int Samples, int N>
-inline Rect pixel_bounds(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c) {
-    constexpr SampleExtent s = sample_extent<Samples>();
-    constexpr int kRoundUp = int(kSubpixelOne) - 1;
-    return {(std::min({a.X, b.X, c.X}) - s.x_hi + kRoundUp) >> kSubpixelBits,
-            (std::min({a.Y, b.Y, c.Y}) - s.y_hi + kRoundUp) >> kSubpixelBits,
-            ((std::max({a.X, b.X, c.X}) - s.x_lo) >> kSubpixelBits) + 1,
-            ((std::max({a.Y, b.Y, c.Y}) - s.y_lo) >> kSubpixelBits) + 1};
-}
 
 template <int N>
 struct TriangleSetup {

@@ -1,0 +1,247 @@
+// The tile back end: one draw's triangles in one tile, each through the per-pixel stages
+// in order:
+//   triangle setup (triangle_setup.h) -> rasterization (rasterization.h, and
+//   rasterization_small.h for small triangles) -> early depth test (depth_stencil.h) ->
+//   interpolation (interpolation.h) -> fragment shading (fragment_shading.h, through the
+//   fragment queue of fragment_queue.h for small triangles) -> output merge (output_merge.h).
+// The tile's thread runs the draws of the tile one after another, in draw order
+// (Context::execute); runs of opaque draws with heavy overdraw take two passes instead
+// (hidden_surface_removal.h).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "softraster/framebuffer.h"
+#include "softraster/pipeline/binning.h"
+#include "softraster/pipeline/depth_stencil.h"
+#include "softraster/pipeline/fragment_queue.h"
+#include "softraster/pipeline/fragment_shading.h"
+#include "softraster/pipeline/interpolation.h"
+#include "softraster/pipeline/output_merge.h"
+#include "softraster/pipeline/rasterization.h"
+#include "softraster/pipeline/rasterization_small.h"
+#include "softraster/pipeline/triangle_setup.h"
+#include "softraster/render_state.h"
+
+namespace softraster {
+
+// A draw's triangles as binning left them: its chunks' bins and its post-transform vertices.
+template <int N>
+struct BinnedTriangles {
+    std::span<const TriangleBin<N>> bins;
+    const ShadedVertex<N>* post = nullptr;
+};
+
+// Calls f(setup, ordinal) for each of the draw's triangles in tile (tx, ty), whose pixels
+// are `rect`, in draw order; the ordinal counts them (hidden_surface_removal.h names a
+// triangle by it). Without Planes, the setup has its coverage only (f makes the planes
+// when it needs them).
+template <int Samples, bool Planes = true, int N, class F>
+void for_each_triangle_setup(const BinnedTriangles<N>& draw, FrontFace front, int tx, int ty, const Rect& rect, F&& f) {
+    TriangleSetup<N> setup;
+    uint32_t ordinal = 0;
+    // Setup reads the window position and varyings of three vertices anywhere in the
+    // draw's vertex buffer: fetch those of a triangle a few places ahead into the cache
+    // while this one is drawn, or the loads wait on memory.
+    constexpr size_t kAhead = 4;
+    for (const TriangleBin<N>& bin : draw.bins) {
+        const std::span<const TriangleRef> refs = bin.triangles_in(tx, ty);
+        auto prefetch = [&](const TriangleRef& r) {
+            for (uint32_t i : r.v) {
+                const ShadedVertex<N>& v = bin.vertex(i, draw.post);
+                __builtin_prefetch(&v);  // at most two cache lines
+                __builtin_prefetch(reinterpret_cast<const char*>(&v + 1) - 1);
+            }
+        };
+        for (size_t a = 1; a < std::min(refs.size(), kAhead); ++a) prefetch(refs[a]);
+        for (size_t k = 0; k < refs.size(); ++k, ++ordinal) {
+            if (k + kAhead < refs.size()) prefetch(refs[k + kAhead]);
+            const TriangleRef& r = refs[k];
+            if (setup_coverage<Samples>(bin.vertex(r.v[0], draw.post), bin.vertex(r.v[1], draw.post),
+                                        bin.vertex(r.v[2], draw.post), front, rect, setup)) {
+                if constexpr (Planes) setup_planes(setup);
+                f(setup, ordinal);
+            }
+        }
+    }
+}
+
+template <Shader S, int Samples, BlendMode B, class DepthStencil = DepthTest>
+struct TileBackEnd {
+    static constexpr int N = kVaryingCount<typename S::Varyings>;
+    using V = typename S::Varyings;
+
+    const S& shader;
+    const RenderState& state;
+    DepthStencil depth;
+    BinnedTriangles<N> triangles;
+    Framebuffer& fb;
+
+    // How the draw's triangles in a tile are rasterized and shaded:
+    // - FragmentQueue: small triangles leave a group of eight pixels mostly empty, so
+    //   their fragments are depth-tested at once and queued, then shaded eight at a time
+    //   across triangles (fragment_queue.h). Needs a batch shader that never discards, an
+    //   opaque draw (colors written later must not depend on what they overwrite) and
+    //   color writes on. Big single-sampled triangles fill their groups anyway: they go
+    //   straight through EightPixelGroups, the queue flushed first.
+    // - EightPixelGroups: single-sampled, with a batch shader: rows in groups of eight
+    //   pixels, tested, shaded and merged as vectors. Without wide (AVX2) lanes only
+    //   triangles at least 16 pixels wide, where the lanes are mostly full.
+    // - PixelByPixel: everything else (MSAA draws that cannot queue, shaders without a
+    //   batch version, narrow triangles on the generic path): one fragment at a time.
+    enum class Strategy { FragmentQueue, EightPixelGroups, PixelByPixel };
+    static constexpr bool kQueueable = BatchShader<S> && PureShader<S> && B == BlendMode::Opaque;
+    Strategy strategy() const {
+        if (kQueueable && state.color_write) return Strategy::FragmentQueue;
+        return Samples == 1 && BatchShader<S> ? Strategy::EightPixelGroups : Strategy::PixelByPixel;
+    }
+
+    // Draws the draw's triangles in tile (tx, ty), whose pixels are `rect`; returns the
+    // fragments shaded. WideLanes: compiled for AVX2, where eight lanes are one register.
+    template <bool WideLanes>
+    uint64_t draw(int tx, int ty, const Rect& rect) const {
+        uint64_t shaded = 0;
+        if constexpr (kQueueable) {
+            if (strategy() == Strategy::FragmentQueue) {
+                // One queue per thread, off the stack: a few kilobytes that would otherwise
+                // sit among the tile loop's spilled registers.
+                static thread_local FragmentQueue<S, Samples> queue;
+                queue.start(shader, fb);
+                for_each_triangle_setup<Samples, /*Planes=*/false>(triangles, state.front_face, tx, ty, rect,
+                                                                   [&](TriangleSetup<N>& setup, uint32_t) {
+                    if (Samples == 1 && is_large(setup.bounds)) {
+                        queue.flush();
+                        setup_planes(setup);
+                        shaded += draw_groups(setup);
+                    } else {
+                        shaded += queue_triangle(setup, queue);  // makes the planes if needed
+                    }
+                });
+                queue.flush();
+                return shaded;
+            }
+        }
+        for_each_triangle_setup<Samples>(triangles, state.front_face, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+            if constexpr (Samples == 1 && BatchShader<S>) {
+                if (WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {
+                    shaded += draw_groups(setup);
+                    return;
+                }
+            }
+            shaded += draw_pixels(setup);
+        });
+        return shaded;
+    }
+
+    // A triangle at least this big in the tile fills its groups of eight without the queue.
+    static bool is_large(const Rect& r) { return (r.x1 - r.x0) >= 32 && (r.y1 - r.y0) >= 16; }
+
+    // PixelByPixel: each covered pixel's samples, depth-tested, shaded at the pixel center
+    // and merged.
+    uint64_t draw_pixels(const TriangleSetup<N>& t) const {
+        uint64_t shaded = 0;
+        rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
+            const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
+            shade_fragment<Samples, B>(shader, depth, state.color_write, fb, px.x, px.y, px.mask, px.z.data(),
+                                       interpolate_depth(t, i, j), t.front_facing,
+                                       [&] { return from_array<V>(interpolate_perspective(t, i, j)); }, shaded);
+        });
+        return shaded;
+    }
+
+    // EightPixelGroups: each row's span in groups of eight; depth, 1/w and the varyings
+    // from their planes for eight pixels at once.
+    uint64_t draw_groups(const TriangleSetup<N>& t) const requires(BatchShader<S>) {
+        using namespace simd;
+        uint64_t shaded = 0;
+        const int width = fb.width();
+        rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
+            const f8 j = splat(float(y - t.origin_y));
+            float* depth_row = fb.depth_data() + fb.sample_index(0, y);
+            Rgba8* color_row = fb.color_data() + fb.sample_index(0, y);
+            for_each_group(x_begin, x_end, [&](int x, i8 covered) {
+                const f8 i = to_float(kLaneIndex) + float(x - t.origin_x);
+                const f8 z = interpolate_depth(t, i, j);
+                const i8 pass = depth.test_group(depth_row, x, width, z, covered);
+                if (!any(pass)) return;
+                shaded += unsigned(__builtin_popcount(bits(pass)));
+                if (!state.color_write) return;
+                shade_group<B>(shader, color_row, x, width, pass, interpolate_perspective(t, i, j), z, t.front_facing);
+            });
+        });
+        return shaded;
+    }
+
+    // FragmentQueue: rasterizes the triangle, depth-tests (and writes depth) and queues the
+    // fragments that pass; returns the number queued. Small triangles' coverage comes eight
+    // pixels at a time in 32-bit lanes (rasterization_small.h).
+    uint64_t queue_triangle(TriangleSetup<N>& t, FragmentQueue<S, Samples>& queue) const requires(kQueueable) {
+        using namespace simd;
+        const int width = fb.width();
+        uint64_t queued = 0;
+        // The triangle may come with its coverage only: its planes are made at its first
+        // covered group, so a triangle that covers no sample costs only its edge functions.
+        auto need_planes = [&] {
+            if (!t.has_planes) setup_planes(t);
+        };
+        // Queues the pixels of group [x, x + 8) of row y set in `pass`, writing `samples` of each.
+        auto queue_group = [&](int y, int x, i8 pass, i8 samples) {
+            const f8 i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
+            queued += unsigned(__builtin_popcount(bits(pass)));
+            const i8 pixel = (splat_i(int32_t(fb.sample_index(0, y))) + (kLaneIndex + x) * Samples);
+            queue.push(pass, interpolate_depth(t, i, j), interpolate_perspective(t, i, j), pixel, samples, t.front_facing);
+        };
+        if constexpr (Samples == 1) {
+            auto test_group = [&](int y, int x, i8 covered) {
+                need_planes();
+                const f8 z = interpolate_depth(t, to_float(kLaneIndex) + float(x - t.origin_x), splat(float(y - t.origin_y)));
+                const i8 pass = depth.test_group(fb.depth_data() + fb.sample_index(0, y), x, width, z, covered);
+                if (any(pass)) queue_group(y, x, pass, splat_i(1));
+            };
+            // A triangle of a few narrow rows: a group's coverage at once in 32-bit lanes
+            // beats walking each row pixel by pixel; the smallest, of one to five pixels,
+            // are quicker walked (docs/performance.md).
+            const int bw = t.bounds.x1 - t.bounds.x0, bh = t.bounds.y1 - t.bounds.y0;
+            if (bw <= kNarrow && bw * bh >= 6 && has_small_edges(t)) {
+                rasterize_small<1>(t, [&](int y, int x, const std::array<i8, 1>& covered) { test_group(y, x, covered[0]); });
+            } else {
+                rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
+                    for_each_group(x_begin, x_end, [&](int x, i8 lanes) { test_group(y, x, lanes); });
+                });
+            }
+        } else if (has_small_edges(t)) {
+            // Four vectors per group in the framebuffer's sample order (GroupSamples<4>): depth
+            // at each sample, tested and written, then a mask of passing samples per pixel.
+            using G = GroupSamples<Samples>;
+            rasterize_small<Samples>(t, [&](int y, int x, const std::array<i8, G::kVectors>& covered) {
+                need_planes();
+                float* depth_row = fb.depth_data() + fb.sample_index(0, y);
+                uint32_t passed = 0;  // Samples bits per pixel
+                for (int v = 0; v < G::kVectors; ++v) {
+                    // at each sample: the pixel's offset from the origin plus the sample's (exact)
+                    const f8 i = to_float(G::pixel(v) + (x - t.origin_x)) + to_float(G::dx(v) - G::pixel(v) * kSubpixelOne32) * (1.0f / 256.0f);
+                    const f8 j = float(y - t.origin_y) + to_float(G::dy(v)) * (1.0f / 256.0f);
+                    const i8 pass = depth.test_group(depth_row, (x + 2 * v) * Samples, width * Samples, interpolate_depth(t, i, j), covered[size_t(v)]);
+                    passed |= bits(pass) << (8 * v);
+                }
+                if (!passed) return;
+                const i8 samples = (splat_i(int32_t(passed)) >> (kLaneIndex * Samples)) & ((1 << Samples) - 1);
+                queue_group(y, x, samples != 0, samples);
+            });
+        } else {
+            need_planes();  // (this rasterizer interpolates depth itself)
+            rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
+                const size_t base = fb.sample_index(px.x, px.y);
+                const unsigned pass = depth.template test_and_write_pixel<Samples>(fb.depth_data() + base, px.mask, px.z.data());
+                if (!pass) return;
+                const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
+                ++queued;
+                queue.push(interpolate_depth(t, i, j), interpolate_perspective(t, i, j), int32_t(base), pass, t.front_facing);
+            });
+        }
+        return queued;
+    }
+};
+
+}  // namespace softraster
