@@ -25,19 +25,16 @@
 
 namespace softraster {
 
-// Calls f.template operator()<Samples, Blend>() with the framebuffer's sample count and the
-// state's blend mode as compile-time constants, so inner loops never branch on them.
+// Calls f.template operator()<Samples, Blended>() with the framebuffer's sample count and
+// whether the state blends as compile-time constants, so inner loops never branch on them.
 template <class F>
-void dispatch_samples_blend(int samples, BlendMode blend, F&& f) {
-    auto with_samples = [&]<BlendMode B>() {
-        if (samples == 4) f.template operator()<4, B>();
-        else f.template operator()<1, B>();
+void dispatch_samples_blending(int samples, BlendMode blend, F&& f) {
+    auto with_samples = [&]<bool Blended>() {
+        if (samples == 4) f.template operator()<4, Blended>();
+        else f.template operator()<1, Blended>();
     };
-    switch (blend) {
-        case BlendMode::Opaque: with_samples.template operator()<BlendMode::Opaque>(); break;
-        case BlendMode::Alpha: with_samples.template operator()<BlendMode::Alpha>(); break;
-        case BlendMode::Additive: with_samples.template operator()<BlendMode::Additive>(); break;
-    }
+    if (blend == BlendMode::Opaque) with_samples.template operator()<false>();
+    else with_samples.template operator()<true>();
 }
 
 class Context {
@@ -56,8 +53,8 @@ public:
               std::span<const uint32_t> indices) {
         if (topology == Topology::Triangles) return draw_triangles(shader, vertices, indices);
         validate_indices(indices, vertices.size(), topology);
-        dispatch_samples_blend(fb_->samples(), state.blend, [&]<int Samples, BlendMode B>() {
-            commands_.push_back(std::make_unique<LinePointCommand<S, Samples, B>>(topology, shader, state, vertices, indices));
+        dispatch_samples_blending(fb_->samples(), state.blend, [&]<int Samples, bool Blended>() {
+            commands_.push_back(std::make_unique<LinePointCommand<S, Samples, Blended>>(topology, shader, state, vertices, indices));
         });
     }
     // The same for triangles only: a caller that draws nothing else compiles no line and
@@ -65,8 +62,8 @@ public:
     template <Shader S>
     void draw_triangles(const S& shader, std::span<const typename S::Vertex> vertices, std::span<const uint32_t> indices) {
         validate_indices(indices, vertices.size(), Topology::Triangles);
-        dispatch_samples_blend(fb_->samples(), state.blend, [&]<int Samples, BlendMode B>() {
-            commands_.push_back(std::make_unique<TriangleCommand<S, Samples, B>>(shader, state, vertices, indices));
+        dispatch_samples_blending(fb_->samples(), state.blend, [&]<int Samples, bool Blended>() {
+            commands_.push_back(std::make_unique<TriangleCommand<S, Samples, Blended>>(shader, state, vertices, indices));
         });
     }
 

@@ -9,6 +9,7 @@
 
 #include "scene/record_surface_draw.h"
 #include "softraster/context.h"
+#include "softraster/worker_pool.h"
 
 namespace softraster {
 namespace {
@@ -129,6 +130,8 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     for (auto* list : {&opaque, &blended})
         for (Keyed& k : *list) draws_.push_back(std::move(k.draw));
 }
+
+SceneRenderer::~SceneRenderer() = default;
 
 size_t SceneRenderer::triangle_count() const {
     size_t n = 0;

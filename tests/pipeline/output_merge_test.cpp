@@ -61,18 +61,18 @@ TEST(Blend, AlphaAndAdditiveFollowTheFormulasWithinOneLevel) {
         const Rgba8 dst{uint8_t(trial * 37 % 256), uint8_t(trial * 91 % 256), uint8_t(trial * 13 % 256), uint8_t(trial * 53 % 256)};
         const glm::vec4 src(float(trial % 17) / 16, float(trial % 23) / 22, float(trial % 7) / 6, float(trial % 29) / 28);
         const glm::vec4 d = glm::vec4(dst.r, dst.g, dst.b, dst.a) / 255.0f;
-        const Rgba8 a = blend<BlendMode::Alpha>(src, dst);
+        const Rgba8 a = blend(BlendMode::Alpha, src, dst);
         ASSERT_TRUE(near(a.r, src.r * src.a + d.r * (1 - src.a))) << trial;
         ASSERT_TRUE(near(a.g, src.g * src.a + d.g * (1 - src.a))) << trial;
         ASSERT_TRUE(near(a.a, src.a + d.a * (1 - src.a))) << trial;
-        const Rgba8 add = blend<BlendMode::Additive>(src, dst);
+        const Rgba8 add = blend(BlendMode::Additive, src, dst);
         ASSERT_TRUE(near(add.b, std::min(1.0f, src.b * src.a + d.b))) << trial;
         ASSERT_EQ(add.a, dst.a);  // additive keeps the destination alpha
     }
-    EXPECT_EQ(blend<BlendMode::Additive>(glm::vec4(1, 1, 1, 1), Rgba8{250, 250, 250, 255}).r, 255);  // saturates
-    EXPECT_EQ(blend<BlendMode::Opaque>(glm::vec4(2, -1, 0.5f, 1), Rgba8{}), (Rgba8{255, 0, 128, 255}));
-    EXPECT_EQ(blend<BlendMode::Alpha>(glm::vec4(1, 0, 0, 1), Rgba8{0, 255, 0, 255}), (Rgba8{255, 0, 0, 255}));
-    EXPECT_EQ(blend<BlendMode::Alpha>(glm::vec4(1, 0, 0, 0), Rgba8{0, 255, 0, 255}), (Rgba8{0, 255, 0, 255}));
+    EXPECT_EQ(blend(BlendMode::Additive, glm::vec4(1, 1, 1, 1), Rgba8{250, 250, 250, 255}).r, 255);  // saturates
+    EXPECT_EQ(blend(BlendMode::Opaque, glm::vec4(2, -1, 0.5f, 1), Rgba8{}), (Rgba8{255, 0, 128, 255}));
+    EXPECT_EQ(blend(BlendMode::Alpha, glm::vec4(1, 0, 0, 1), Rgba8{0, 255, 0, 255}), (Rgba8{255, 0, 0, 255}));
+    EXPECT_EQ(blend(BlendMode::Alpha, glm::vec4(1, 0, 0, 0), Rgba8{0, 255, 0, 255}), (Rgba8{0, 255, 0, 255}));
 }
 
 TEST(Blend, UnormProductIsRoundedExactly) {

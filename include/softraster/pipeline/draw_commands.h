@@ -7,8 +7,8 @@
 //   3. per tile, in draw order, the tile back end (tile_back_end.h): triangle setup,
 //      rasterization, depth test, fragment shading, output merge.
 // A command is a type-erased draw: one virtual call per chunk or per tile; everything per
-// pixel inside it is a template specialized for the shader, the sample count and the blend
-// mode, and each phase runs in the copy for this CPU (simd.h, on_best_path).
+// pixel inside it is a template specialized for the shader, the sample count and whether
+// the draw blends, and each phase runs in the copy for this CPU (simd.h, on_best_path).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -155,7 +155,7 @@ void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& sta
 }
 }  // namespace phases
 
-template <Shader S, int Samples, BlendMode B>
+template <Shader S, int Samples, bool Blended>
 class TriangleCommand final : public Command {
 public:
     static constexpr int N = kVaryingCount<typename S::Varyings>;
@@ -163,7 +163,7 @@ public:
 
     TriangleCommand(const S& shader, const RenderState& state, std::span<const Vertex> vertices, std::span<const uint32_t> indices)
         : shader_(shader), state_(state), vertices_(vertices), indices_(indices) {
-        allows_hsr_ = PureShader<S> && B == BlendMode::Opaque && softraster::allows_hidden_surface_removal(state_);
+        allows_hsr_ = PureShader<S> && !Blended && softraster::allows_hidden_surface_removal(state_);
     }
 
     void prepare() override {
@@ -184,18 +184,18 @@ public:
     void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
 
     uint64_t draw_tile(int tile, const Rect& rect, const DrawTarget& target) override {
-        const TileBackEnd<S, Samples, B> back_end{shader_, state_, DepthTest(state_), triangles(), *target.fb};
+        const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), triangles(), *target.fb};
         const int tx = tile % target.grid.tiles_x, ty = tile / target.grid.tiles_x;
         return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
     }
 
     void visibility_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, uint32_t* owners) override {
-        if constexpr (B == BlendMode::Opaque && PureShader<S>)
+        if constexpr (!Blended && PureShader<S>)
             phases::visibility_pass<Samples>(triangles(), state_, *target.fb, tile % target.grid.tiles_x,
                                              tile / target.grid.tiles_x, rect, draw, owners);
     }
     uint64_t shading_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, const uint32_t* owners) override {
-        if constexpr (B == BlendMode::Opaque && PureShader<S>) {
+        if constexpr (!Blended && PureShader<S>) {
             const int tx = tile % target.grid.tiles_x, ty = tile / target.grid.tiles_x;
             return simd::on_best_path([&]<bool>() {
                 return softraster::shading_pass<Samples>(shader_, triangles(), state_, *target.fb, tx, ty, rect, draw, owners);
@@ -217,7 +217,7 @@ private:
 
 // Lines and points: few and cheap, so the front end keeps them as one list (clipped and in
 // window space) and every tile walks all of them, drawing only its own pixels.
-template <Shader S, int Samples, BlendMode B>
+template <Shader S, int Samples, bool Blended>
 class LinePointCommand final : public Command {
 public:
     static constexpr int N = kVaryingCount<typename S::Varyings>;
@@ -242,7 +242,7 @@ public:
         auto fragment = [&](int x, int y, float z, auto&& make_varyings) {
             std::array<float, Samples> zs;
             zs.fill(z);
-            shade_fragment<Samples, B>(shader_, depth, state_.color_write, *target.fb, x, y, (1u << Samples) - 1, zs.data(), z,
+            shade_fragment<Samples, Blended>(shader_, depth, state_, *target.fb, x, y, (1u << Samples) - 1, zs.data(), z,
                                        true, make_varyings, shaded);
         };
         if (topology_ == Topology::Points) {

@@ -33,8 +33,8 @@ concept PureShader = requires { requires S::kPure; };
 // One fragment of pixel (x, y) whose samples `covered` lie at depths z: the depth test
 // (depth_stencil.h), the shader with the varyings make_varyings() returns, then the depth
 // write and the output merge for the samples that passed, unless the shader discarded.
-template <int Samples, BlendMode B, class DepthStencil, Shader S, class MakeVaryings>
-inline void shade_fragment(const S& shader, const DepthStencil& depth, bool color_write, Framebuffer& fb, int x, int y,
+template <int Samples, bool Blended, class DepthStencil, Shader S, class MakeVaryings>
+inline void shade_fragment(const S& shader, const DepthStencil& depth, const RenderState& state, Framebuffer& fb, int x, int y,
                            unsigned covered, const float* z, float center_z, bool front_facing,
                            MakeVaryings&& make_varyings, uint64_t& shaded) {
     const size_t base = fb.sample_index(x, y);
@@ -46,18 +46,18 @@ inline void shade_fragment(const S& shader, const DepthStencil& depth, bool colo
     glm::vec4 color;
     if (!shader.fragment(v, frag, color)) return;
     depth.template write_pixel<Samples>(fb.depth_data() + base, pass, z);
-    if (color_write) merge_fragment<Samples, B>(fb.color_data() + base, pass, color);
+    if (state.color_write) merge_fragment<Samples, Blended>(state.blend, fb.color_data() + base, pass, color);
 }
 
 // Eight pixels [x, x + 8) of a row whose lanes `pass` passed the depth test: the batch
 // shader, then the output merge of those lanes.
-template <BlendMode B, BatchShader S>
-inline void shade_group(const S& shader, Rgba8* row, int x, int width, simd::i8 pass,
+template <bool Blended, BatchShader S>
+inline void shade_group(const S& shader, BlendMode mode, Rgba8* row, int x, int width, simd::i8 pass,
                         const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& varyings, simd::f8 z,
                         bool front_facing) {
     std::array<simd::f8, 4> rgba;
     shader.fragment_batch(varyings, z, front_facing, rgba);
-    blend_group<B>(row, x, width, pass, rgba);
+    blend_group<Blended>(mode, row, x, width, pass, rgba);
 }
 
 }  // namespace softraster

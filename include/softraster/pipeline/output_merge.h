@@ -28,28 +28,28 @@ inline unsigned mul_unorm8(unsigned x, unsigned y) {
     return (t + (t >> 8)) >> 8;
 }
 
-template <BlendMode B>
-inline Rgba8 blend(const glm::vec4& src, Rgba8 dst) {
+inline Rgba8 blend(BlendMode mode, const glm::vec4& src, Rgba8 dst) {
     const Rgba8 s = quantize_rgba8(src);  // clamps to [0, 1]
-    if constexpr (B == BlendMode::Opaque) {
-        return s;
-    } else {
-        auto sat = [](unsigned v) { return uint8_t(v > 255 ? 255 : v); };
-        const unsigned a = s.a, inv_a = 255u - s.a;
-        if constexpr (B == BlendMode::Alpha) {
+    auto sat = [](unsigned v) { return uint8_t(v > 255 ? 255 : v); };
+    const unsigned a = s.a, inv_a = 255u - s.a;
+    switch (mode) {
+        case BlendMode::Opaque: break;
+        case BlendMode::Alpha:
             return {sat(mul_unorm8(s.r, a) + mul_unorm8(dst.r, inv_a)), sat(mul_unorm8(s.g, a) + mul_unorm8(dst.g, inv_a)),
                     sat(mul_unorm8(s.b, a) + mul_unorm8(dst.b, inv_a)), sat(a + mul_unorm8(dst.a, inv_a))};
-        } else {
+        case BlendMode::Additive:
             return {sat(mul_unorm8(s.r, a) + dst.r), sat(mul_unorm8(s.g, a) + dst.g), sat(mul_unorm8(s.b, a) + dst.b), dst.a};
-        }
     }
+    return s;
 }
 
-// Writes one shaded fragment's color to the samples in `mask` of a pixel.
-template <int Samples, BlendMode B>
-inline void merge_fragment(Rgba8* color, unsigned mask, const glm::vec4& src) {
+// Writes one shaded fragment's color to the samples in `mask` of a pixel. Blended: the
+// draw blends (its mode is read here), the one blending fact the back end is compiled for,
+// so that opaque draws never look at a blend mode.
+template <int Samples, bool Blended>
+inline void merge_fragment(BlendMode mode, Rgba8* color, unsigned mask, const glm::vec4& src) {
     for (int s = 0; s < Samples; ++s)
-        if (mask & (1u << s)) color[s] = blend<B>(src, color[s]);
+        if (mask & (1u << s)) color[s] = Blended ? blend(mode, src, color[s]) : quantize_rgba8(src);
 }
 
 // ---- eight pixels of a row at once (see tile_back_end.h)
@@ -66,12 +66,12 @@ inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c) {
 }
 
 // Blends colors c (r, g, b, a lanes) into the group of eight RGBA8 pixels from row[x] on
-// (simd.h), where `write` is set: the same arithmetic as blend<B> above, lane by lane.
-template <BlendMode B>
-inline void blend_group(Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
+// (simd.h), where `write` is set: the same arithmetic as blend() above, lane by lane.
+template <bool Blended>
+inline void blend_group(BlendMode mode, Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
     using simd::i8;
     const i8 old = simd::load_group<i8>(row, x, width);
-    if constexpr (B == BlendMode::Opaque) {
+    if (!Blended || mode == BlendMode::Opaque) {
         simd::store_group(row, x, width, simd::select(write, quantize_pack_rgba8(c), old));
         return;
     }
@@ -79,7 +79,7 @@ inline void blend_group(Rgba8* row, int x, int width, simd::i8 write, const std:
              sa = simd::quantize_unorm8(c[3]);
     const i8 dr = old & 255, dg = (old >> 8) & 255, db = (old >> 16) & 255, da = (old >> 24) & 255;
     i8 r, g, b, a;
-    if constexpr (B == BlendMode::Alpha) {
+    if (mode == BlendMode::Alpha) {
         const i8 inv = 255 - sa;
         r = mul_unorm8(sr, sa) + mul_unorm8(dr, inv);
         g = mul_unorm8(sg, sa) + mul_unorm8(dg, inv);

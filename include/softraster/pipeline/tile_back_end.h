@@ -47,11 +47,15 @@ void for_each_triangle_setup(const BinnedTriangles<N>& draw, FrontFace front, in
     constexpr size_t kAhead = 4;
     for (const TriangleBin<N>& bin : draw.bins) {
         const std::span<const TriangleRef> refs = bin.triangles_in(tx, ty);
+        // (Only vertices of the post-transform buffer: the few the clipper made sit in a
+        // short list of their own. GCC 12 drops a prefetch whose address is chosen by a
+        // condition, as bin.vertex() chooses between the two lists.)
         auto prefetch = [&](const TriangleRef& r) {
             for (uint32_t i : r.v) {
-                const ShadedVertex<N>& v = bin.vertex(i, draw.post);
-                __builtin_prefetch(&v);  // at most two cache lines
-                __builtin_prefetch(reinterpret_cast<const char*>(&v + 1) - 1);
+                if (i & kClippedVertex) continue;
+                const char* v = reinterpret_cast<const char*>(draw.post + i);
+                __builtin_prefetch(v);  // at most two cache lines
+                __builtin_prefetch(v + sizeof(ShadedVertex<N>) - 1);
             }
         };
         for (size_t a = 1; a < std::min(refs.size(), kAhead); ++a) prefetch(refs[a]);
@@ -67,13 +71,15 @@ void for_each_triangle_setup(const BinnedTriangles<N>& draw, FrontFace front, in
     }
 }
 
-template <Shader S, int Samples, BlendMode B, class DepthStencil = DepthTest>
+template <Shader S, int Samples, bool Blended, class DepthStencil = DepthTest>
 struct TileBackEnd {
     static constexpr int N = kVaryingCount<typename S::Varyings>;
     using V = typename S::Varyings;
 
-    const S& shader;
-    const RenderState& state;
+    // By value, not by reference: the tile loops read them after every framebuffer store,
+    // which may alias anything, so each reference would cost another load there.
+    S shader;
+    RenderState state;
     DepthStencil depth;
     BinnedTriangles<N> triangles;
     Framebuffer& fb;
@@ -88,10 +94,10 @@ struct TileBackEnd {
     // - EightPixelGroups: single-sampled, with a batch shader: rows in groups of eight
     //   pixels, tested, shaded and merged as vectors. Without wide (AVX2) lanes only
     //   triangles at least 16 pixels wide, where the lanes are mostly full.
-    // - PixelByPixel: everything else (MSAA draws that cannot queue, shaders without a
-    //   batch version, narrow triangles on the generic path): one fragment at a time.
+    // - PixelByPixel: everything else (blended MSAA draws, shaders without a batch version
+    //   or that may discard, narrow triangles on the generic path): one fragment at a time.
     enum class Strategy { FragmentQueue, EightPixelGroups, PixelByPixel };
-    static constexpr bool kQueueable = BatchShader<S> && PureShader<S> && B == BlendMode::Opaque;
+    static constexpr bool kQueueable = BatchShader<S> && PureShader<S> && !Blended;
     Strategy strategy() const {
         if (kQueueable && state.color_write) return Strategy::FragmentQueue;
         return Samples == 1 && BatchShader<S> ? Strategy::EightPixelGroups : Strategy::PixelByPixel;
@@ -124,7 +130,7 @@ struct TileBackEnd {
         }
         for_each_triangle_setup<Samples>(triangles, state.front_face, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
             if constexpr (Samples == 1 && BatchShader<S>) {
-                if (WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {
+                if (WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {  // EightPixelGroups
                     shaded += draw_groups(setup);
                     return;
                 }
@@ -143,7 +149,7 @@ struct TileBackEnd {
         uint64_t shaded = 0;
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
             const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
-            shade_fragment<Samples, B>(shader, depth, state.color_write, fb, px.x, px.y, px.mask, px.z.data(),
+            shade_fragment<Samples, Blended>(shader, depth, state, fb, px.x, px.y, px.mask, px.z.data(),
                                        interpolate_depth(t, i, j), t.front_facing,
                                        [&] { return from_array<V>(interpolate_perspective(t, i, j)); }, shaded);
         });
@@ -167,7 +173,7 @@ struct TileBackEnd {
                 if (!any(pass)) return;
                 shaded += unsigned(__builtin_popcount(bits(pass)));
                 if (!state.color_write) return;
-                shade_group<B>(shader, color_row, x, width, pass, interpolate_perspective(t, i, j), z, t.front_facing);
+                shade_group<Blended>(shader, state.blend, color_row, x, width, pass, interpolate_perspective(t, i, j), z, t.front_facing);
             });
         });
         return shaded;

@@ -1,16 +1,23 @@
 // Draws a Scene: everything that does not change between frames (matrices, lights, the
 // flat-shading buffers, the draw order) is prepared once, then render() draws a frame.
+//
+// This header stays light (no pipeline templates): the draws are recorded in
+// scene_renderer.cpp and src/scene/record_surface_draw.h.
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <vector>
 
-#include "softraster/context.h"
 #include "softraster/framebuffer.h"
-#include "softraster/worker_pool.h"
+#include "softraster/image.h"
+#include "softraster/render_state.h"
 #include "softraster/scene/scene.h"
-#include "softraster/shading/surface_shader.h"
+#include "softraster/shading/surface_uniforms.h"
 
 namespace softraster {
+
+class Context;
+class WorkerPool;
 
 struct RenderStats {
     uint64_t fragments_shaded = 0;  // fragment shader runs
@@ -20,6 +27,9 @@ class SceneRenderer {
 public:
     // threads: how many threads draw (1 = all on the calling thread).
     explicit SceneRenderer(const Scene& scene, unsigned threads = 1);
+    ~SceneRenderer();
+    SceneRenderer(const SceneRenderer&) = delete;
+    SceneRenderer& operator=(const SceneRenderer&) = delete;
 
     // Clears fb and draws every object in the spec's draw order. The draws are recorded on
     // the first call and replayed after, so buffers are reused from frame to frame; fb must
@@ -33,12 +43,12 @@ public:
 
     // One object, ready to draw.
     struct Draw {
-        const Mesh* mesh;                    // the object's mesh, or `flat_mesh`
+        const Mesh* mesh = nullptr;          // the object's mesh, or `flat_mesh`
         std::shared_ptr<Mesh> flat_mesh;     // flat shading: corners carry world face normals
         SurfaceUniforms uniforms;
         RenderState state;
-        Shading shading;
-        bool colored;                        // the mesh has vertex colors other than white
+        Shading shading = Shading::Lambert;
+        bool colored = false;                // the mesh has vertex colors other than white
     };
     const std::vector<Draw>& draws() const { return draws_; }
 

@@ -16,6 +16,7 @@
 #include "softraster/scene/mesh.h"
 #include "softraster/scene/scene.h"
 #include "softraster/shading/lighting.h"
+#include "softraster/shading/surface_uniforms.h"
 #include "softraster/shading/texture.h"
 
 namespace softraster {
@@ -52,22 +53,6 @@ struct SurfaceVaryings {
     static constexpr int kUvAt = kIntensityAt + 3 * kIntensity;
     static constexpr int kColorAt = kUvAt + 2 * kUv;
     static constexpr int kFloats = kAny ? kColorAt + 4 * kColor : 1;
-};
-
-// Everything a draw's shader reads that is the same for all its vertices and fragments.
-struct SurfaceUniforms {
-    glm::mat4 mvp{1.0f};
-    glm::mat4 model{1.0f};
-    glm::mat3 normal_matrix{1.0f};  // transpose(inverse(mat3(M))); identity for pre-transformed normals
-    glm::vec3 eye{0.0f};
-    LightSet lights;
-    glm::vec4 color{1.0f};
-    glm::vec3 specular{0.0f};
-    bool has_specular = false;  // specular != 0: otherwise the term is skipped
-    float shininess = 32.0f;
-    const Texture* texture = nullptr;
-    Filter filter = Filter::Bilinear;
-    Wrap wrap = Wrap::Repeat;
 };
 
 // Colored: the mesh has vertex colors other than white (otherwise the term is 1 and is
@@ -130,10 +115,7 @@ struct SurfaceShader {
                 for (size_t c = 0; c < 4; ++c) base[c] *= in[size_t(Varyings::kColorAt) + c];
             if constexpr (Varyings::kUv) {
                 std::array<f8, 4> tex;
-                for (int l = 0; l < kLanes; ++l) {
-                    const glm::vec4 t = u->texture->sample(glm::vec2(in[Varyings::kUvAt][l], in[Varyings::kUvAt + 1][l]), u->filter, u->wrap);
-                    for (int c = 0; c < 4; ++c) tex[size_t(c)][l] = t[c];
-                }
+                u->texture->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], u->filter, u->wrap, tex);
                 for (size_t c = 0; c < 4; ++c) base[c] *= tex[c];
             }
             if constexpr (Model == Shading::Unlit) {

@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <array>
 #include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "softraster/image.h"
+#include "softraster/pipeline/simd.h"
 
 namespace softraster {
 
@@ -36,6 +38,10 @@ public:
         if (f == Filter::Nearest) return w == Wrap::Repeat ? sample<Filter::Nearest, Wrap::Repeat>(uv) : sample<Filter::Nearest, Wrap::Clamp>(uv);
         return w == Wrap::Repeat ? sample<Filter::Bilinear, Wrap::Repeat>(uv) : sample<Filter::Bilinear, Wrap::Clamp>(uv);
     }
+    // Eight lookups at once (u[l], v[l]) -> (r, g, b, a)[l], each as sample() computes it.
+    // Out of line: the eight-pixel shaders call it from every tile loop they are inlined
+    // into, and one compiled copy (a call per eight texels) keeps the build small.
+    void sample8(const simd::f8& u, const simd::f8& v, Filter f, Wrap w, std::array<simd::f8, 4>& rgba) const;
 
 private:
     int width_, height_;

@@ -1,0 +1,30 @@
+// What the scene's surface shader (surface_shader.h) reads that is the same for all the
+// vertices and fragments of one draw: matrices, lights and the material.
+#pragma once
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "softraster/shading/lighting.h"
+#include "softraster/shading/texture.h"
+
+namespace softraster {
+
+// Everything a draw's shader reads that is the same for all its vertices and fragments.
+struct SurfaceUniforms {
+    glm::mat4 mvp{1.0f};
+    glm::mat4 model{1.0f};
+    glm::mat3 normal_matrix{1.0f};  // transpose(inverse(mat3(M))); identity for pre-transformed normals
+    glm::vec3 eye{0.0f};
+    LightSet lights;
+    glm::vec4 color{1.0f};
+    glm::vec3 specular{0.0f};
+    bool has_specular = false;  // specular != 0: otherwise the term is skipped
+    float shininess = 32.0f;
+    const Texture* texture = nullptr;
+    Filter filter = Filter::Bilinear;
+    Wrap wrap = Wrap::Repeat;
+};
+
+}  // namespace softraster
