@@ -1,6 +1,7 @@
 // Shared helpers for the unit tests: tiny shaders that take clip-space positions directly.
 #pragma once
 #include <array>
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -120,6 +121,7 @@ struct RgbShader {
     using Vertex = RgbVertex;
     using Varyings = RgbVaryings;
     static constexpr bool kPure = Pure;
+    std::atomic<uint64_t>* batch_calls = nullptr;  // counts fragment_batch calls, if set
     glm::vec4 vertex(const Vertex& in, Varyings& out) const {
         out = {in.color.r, in.color.g, in.color.b};
         return in.clip;
@@ -129,6 +131,7 @@ struct RgbShader {
         return true;
     }
     void fragment_batch(const std::array<simd::f8, 3>& v, simd::f8, bool front_facing, std::array<simd::f8, 4>& c) const {
+        if (batch_calls) batch_calls->fetch_add(1, std::memory_order_relaxed);
         c = {v[0], v[1], front_facing ? v[2] : 1.0f - v[2], simd::splat(1.0f)};
     }
 };
@@ -154,7 +157,8 @@ struct SamplePicture {
     uint64_t shaded = 0;  // fragments shaded
 };
 template <bool Pure>
-SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase depth, const std::vector<RgbMesh>& meshes) {
+SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase depth, const std::vector<RgbMesh>& meshes,
+                              std::atomic<uint64_t>* batch_calls = nullptr) {
     Framebuffer fb(width, height, samples);
     WorkerPool pool(2);
     Context ctx(fb, &pool);
@@ -162,7 +166,7 @@ SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase dept
     ctx.state.cull = CullMode::None;
     ctx.state.depth_func = depth.func;
     for (const RgbMesh& m : meshes)
-        ctx.draw(Topology::Triangles, RgbShader<Pure>{}, std::span<const RgbVertex>(m.vertices), std::span<const uint32_t>(m.indices));
+        ctx.draw(Topology::Triangles, RgbShader<Pure>{batch_calls}, std::span<const RgbVertex>(m.vertices), std::span<const uint32_t>(m.indices));
     ctx.execute();
     const size_t n = size_t(width) * size_t(height) * size_t(samples);
     return {std::vector<Rgba8>(fb.color_data(), fb.color_data() + n), std::vector<float>(fb.depth_data(), fb.depth_data() + n),

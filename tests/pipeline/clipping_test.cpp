@@ -54,9 +54,20 @@ TEST(Clipping, RandomTrianglesStayInsideAndKeepVaryings) {
 }
 
 TEST(Clipping, TriangleInsideIsUnchanged) {
+    // Clipped against any set of the six planes (as if they were crossed), a triangle inside
+    // them all comes back as it was: the same three vertices, bit for bit, in order.
     const ClipPlanes planes = ClipPlanes::frustum();
-    ClipVertex<N> a = make_vertex({0, 0, 0, 1}), b = make_vertex({0.5f, 0, 0, 1}), c = make_vertex({0, 0.5f, 0, 1});
-    EXPECT_EQ(planes.outcode(a.position) | planes.outcode(b.position) | planes.outcode(c.position), 0u);
+    const ClipVertex<N> in[3] = {make_vertex({-0.3f, -0.2f, 0.1f, 1}), make_vertex({0.5f, 0.1f, -0.4f, 1.5f}),
+                                 make_vertex({0.1f, 0.6f, 0.3f, 0.9f})};
+    for (const auto& v : in) ASSERT_EQ(planes.outcode(v.position), 0u);
+    for (unsigned mask = 1; mask < (1u << ClipPlanes::kCount); ++mask) {  // every set of planes
+        ClipPolygon<N> poly;
+        ASSERT_EQ(clip_triangle(in[0], in[1], in[2], planes, mask, poly), 3) << "planes " << mask;
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_EQ(poly.v[size_t(i)].position, in[i].position) << "planes " << mask << " vertex " << i;
+            EXPECT_EQ(poly.v[size_t(i)].var, in[i].var) << "planes " << mask << " vertex " << i;
+        }
+    }
 }
 
 TEST(Clipping, TriangleBehindEyeIsCutAtNearPlane) {

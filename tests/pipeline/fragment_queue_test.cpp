@@ -5,6 +5,7 @@
 // depth, with and without MSAA, both facings, for several depth functions.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <random>
 
 #include "softraster/pipeline/rasterization_small.h"
@@ -40,8 +41,16 @@ TEST(FragmentQueue, SamePictureAsShadingEachTriangle) {
     const std::vector<RgbMesh> meshes = {tiny_triangles()};
     for (int samples : {1, 4})
         for (DepthCase c : kDepthCases) {
-            const SamplePicture queued = draw_rgb_meshes<true>(W, H, samples, c, meshes);
-            const SamplePicture plain = draw_rgb_meshes<false>(W, H, samples, c, meshes);
+            std::atomic<uint64_t> queued_calls{0}, plain_calls{0};
+            const SamplePicture queued = draw_rgb_meshes<true>(W, H, samples, c, meshes, &queued_calls);
+            const SamplePicture plain = draw_rgb_meshes<false>(W, H, samples, c, meshes, &plain_calls);
+            // The queue ran: its shader calls carry eight fragments nearly every time, where
+            // shading triangle by triangle leaves most lanes of these tiny triangles empty
+            // (or, with MSAA, shades them one at a time).
+            ASSERT_GT(queued_calls.load(), 0u);
+            EXPECT_GT(double(queued.shaded) / double(queued_calls.load()), 6.5) << "samples " << samples;
+            if (samples == 1) EXPECT_LT(double(plain.shaded) / double(plain_calls.load()), 6.5);
+            else EXPECT_EQ(plain_calls.load(), 0u);
             EXPECT_TRUE(queued.color == plain.color) << "color differs, samples " << samples << " func " << int(c.func);
             EXPECT_TRUE(queued.depth == plain.depth) << "depth differs, samples " << samples << " func " << int(c.func);
             EXPECT_EQ(queued.shaded, plain.shaded);

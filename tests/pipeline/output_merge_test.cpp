@@ -1,6 +1,9 @@
 // Output merge: every depth compare function, depth writes on and off, and the blend modes.
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <random>
+
 #include "test_support.h"
 
 using namespace softraster;
@@ -87,4 +90,29 @@ TEST(Quantize, RoundsHalfUpAndClamps) {
     EXPECT_EQ(quantize_unorm8(1.7f), 255);
     EXPECT_EQ(quantize_unorm8(NAN), 0);
     EXPECT_EQ(quantize_unorm8(1.0f / 255.0f), 1);
+}
+
+// Eight pixels at a time (blend_group) give the same bytes as one at a time (blend), for
+// every mode, lanes written or not, colors in and out of [0, 1] and NaN.
+TEST(Blend, EightLanesEqualOneAtATime) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> c(-0.2f, 1.2f);
+    std::uniform_int_distribution<int> byte(0, 255);
+    for (BlendMode mode : {BlendMode::Opaque, BlendMode::Alpha, BlendMode::Additive})
+        for (int trial = 0; trial < 3000; ++trial) {
+            std::array<Rgba8, 8> row;
+            for (Rgba8& p : row) p = {uint8_t(byte(rng)), uint8_t(byte(rng)), uint8_t(byte(rng)), uint8_t(byte(rng))};
+            std::array<simd::f8, 4> src;
+            simd::i8 write;
+            for (int l = 0; l < simd::kLanes; ++l) {
+                for (auto& ch : src) ch[l] = trial % 97 == 0 && l == 3 ? NAN : c(rng);
+                write[l] = byte(rng) < 200 ? -1 : 0;
+            }
+            std::array<Rgba8, 8> expected = row;
+            for (int l = 0; l < simd::kLanes; ++l)
+                if (write[l]) expected[size_t(l)] = blend(mode, glm::vec4(src[0][l], src[1][l], src[2][l], src[3][l]), row[size_t(l)]);
+            if (mode == BlendMode::Opaque) blend_group<false>(mode, row.data(), 0, 8, write, src);
+            else blend_group<true>(mode, row.data(), 0, 8, write, src);
+            ASSERT_EQ(std::memcmp(row.data(), expected.data(), sizeof row), 0) << "mode " << int(mode) << " trial " << trial;
+        }
 }

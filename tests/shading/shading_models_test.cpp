@@ -1,6 +1,9 @@
 // Each shading model on a known input, against the spec's formulas computed by hand.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <random>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "softraster/shading/surface_shader.h"
@@ -133,4 +136,61 @@ TEST(ShadingModels, BackFacesAreLitWithTheNormalAsItIs) {
     SurfaceUniforms u = uniforms();
     u.lights.count = 1;  // the light in front
     EXPECT_NEAR(shade<Shading::Lambert>(u, surface({0, 0, -1})).r, 0.8f * 0.1f, 1e-6f);  // not flipped: only ambient
+}
+
+// fragment_batch computes, lane by lane, the same bits as fragment: eight random fragments
+// through each shading model, with and without texture and vertex colors.
+template <Shading M, bool Textured, bool Colored>
+void expect_batch_equals_scalar(const SurfaceUniforms& u) {
+    using S = SurfaceShader<M, Textured, Colored>;
+    constexpr int N = kVaryingCount<typename S::Varyings>;
+    std::mt19937 rng(static_cast<unsigned>(M) * 4 + Textured * 2 + Colored);
+    std::uniform_real_distribution<float> val(-1.5f, 1.5f);
+    const S shader{&u};
+    for (int trial = 0; trial < 200; ++trial) {
+        std::array<simd::f8, N> in;
+        simd::f8 z;
+        for (int l = 0; l < simd::kLanes; ++l) {
+            for (auto& v : in) v[l] = val(rng);
+            z[l] = 0.5f + 0.3f * val(rng);
+        }
+        std::array<simd::f8, 4> batch;
+        shader.fragment_batch(in, z, true, batch);
+        for (int l = 0; l < simd::kLanes; ++l) {
+            std::array<float, size_t(N)> lane;
+            for (size_t k = 0; k < size_t(N); ++k) lane[k] = in[k][l];
+            glm::vec4 scalar;
+            shader.fragment(from_array<typename S::Varyings>(lane), FragCoord{0, 0, z[l], true}, scalar);
+            for (int ch = 0; ch < 4; ++ch)
+                ASSERT_EQ(std::bit_cast<uint32_t>(batch[size_t(ch)][l]), std::bit_cast<uint32_t>(scalar[ch]))
+                    << "model " << int(M) << " textured " << Textured << " colored " << Colored << " lane " << l << " channel " << ch;
+        }
+    }
+}
+
+TEST(ShadingModels, EightFragmentsAtOnceEqualOneAtATime) {
+    SurfaceUniforms u = uniforms();
+    u.lights.to_light[1] = glm::normalize(glm::vec3(0.3f, 1, 0.2f));
+    Image img(5, 3);
+    for (int i = 0; i < 15; ++i) img.pixels[size_t(i)] = {uint8_t(17 * i), uint8_t(255 - 9 * i), uint8_t(40 + 7 * i), uint8_t(200 + 3 * i)};
+    const Texture texture(img);
+    u.texture = &texture;
+    for (Filter f : {Filter::Nearest, Filter::Bilinear})
+        for (Wrap w : {Wrap::Repeat, Wrap::Clamp}) {
+            u.filter = f;
+            u.wrap = w;
+            expect_batch_equals_scalar<Shading::Unlit, true, true>(u);
+            expect_batch_equals_scalar<Shading::BlinnPhong, true, false>(u);
+        }
+    u.shininess = 7.5f;  // not a whole number: powf per lane
+    expect_batch_equals_scalar<Shading::BlinnPhong, false, true>(u);
+    u.shininess = 16.0f;
+    expect_batch_equals_scalar<Shading::Unlit, false, false>(u);
+    expect_batch_equals_scalar<Shading::Flat, false, true>(u);
+    expect_batch_equals_scalar<Shading::Gouraud, true, true>(u);
+    expect_batch_equals_scalar<Shading::Lambert, false, false>(u);
+    expect_batch_equals_scalar<Shading::Lambert, true, true>(u);
+    expect_batch_equals_scalar<Shading::BlinnPhong, false, false>(u);
+    expect_batch_equals_scalar<Shading::Normals, false, false>(u);
+    expect_batch_equals_scalar<Shading::Depth, false, false>(u);
 }

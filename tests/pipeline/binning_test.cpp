@@ -1,0 +1,99 @@
+// Binning: every triangle that survives culling lands in exactly the tiles its sample bounds
+// touch, in draw order within each tile, and nowhere else; the per-tile covered area is
+// the sum the tiles' triangles contribute; a chunk counts only its own range of tiles.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "softraster/pipeline/binning.h"
+#include "test_support.h"
+
+using namespace softraster;
+using namespace softraster::test;
+
+namespace {
+
+constexpr int W = 256, H = 256;  // the viewport random_triangle maps to: 4 x 4 tiles
+
+struct Expected {
+    std::vector<std::vector<uint32_t>> triangles;  // per tile, in draw order
+    std::vector<double> area;                       // per tile
+};
+
+// What binning must produce, computed directly: each triangle tested against each tile.
+Expected expected_bins(const std::vector<ShadedVertex<1>>& post, FaceState faces, const TileGrid& grid) {
+    Expected e{std::vector<std::vector<uint32_t>>(size_t(grid.count())), std::vector<double>(size_t(grid.count()), 0.0)};
+    for (uint32_t t = 0; t < post.size() / 3; ++t) {
+        const ShadedVertex<1>&a = post[3 * t], &b = post[3 * t + 1], &c = post[3 * t + 2];
+        const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
+        if (!survives_culling(area2, faces)) continue;
+        const Rect bounds = intersect(pixel_bounds<1>(a, b, c), Rect{0, 0, W, H});
+        for (int tile = 0; tile < grid.count(); ++tile) {
+            const Rect in = intersect(bounds, grid.tile_rect(tile));
+            if (in.empty()) continue;
+            e.triangles[size_t(tile)].push_back(t);
+            const double w = in.x1 - in.x0, h = in.y1 - in.y0;
+            e.area[size_t(tile)] += std::min(w * h, double(std::abs(area2)) / (2.0 * 256.0 * 256.0));
+        }
+    }
+    return e;
+}
+
+}  // namespace
+
+TEST(Binning, EachTriangleInTheTilesItsBoundsTouchInDrawOrder) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0, 1);
+    const TileGrid grid(W, H);
+    for (int round = 0; round < 20; ++round) {
+        // Triangles of every size, some reaching past the viewport, in one corner of it
+        // in some rounds (so that the chunk's range of tiles is smaller than the grid).
+        const bool corner = round % 2 == 1;
+        std::vector<ShadedVertex<1>> post;
+        for (int k = 0; k < 400; ++k) {
+            std::array<ShadedVertex<1>, 3> p;
+            const float size = k % 10 == 0 ? 200.0f : 1.0f + 40.0f * u(rng) * u(rng);
+            const float cx = corner ? 150 + 100 * u(rng) : -20 + 296 * u(rng), cy = corner ? 160 + 90 * u(rng) : -20 + 296 * u(rng);
+            if (!random_triangle(rng, cx, cy, size, size, p)) continue;
+            post.insert(post.end(), p.begin(), p.end());
+        }
+        std::vector<uint32_t> indices(post.size());
+        for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
+        const FaceState faces{round % 3 == 0 ? CullMode::None : CullMode::Back, FrontFace::CCW};
+        TriangleBin<1> bin;
+        bin_triangles<1>(indices, post.data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, faces, grid, bin);
+
+        const Expected e = expected_bins(post, faces, grid);
+        size_t listed = 0;
+        for (int tile = 0; tile < grid.count(); ++tile) {
+            const int tx = tile % grid.tiles_x, ty = tile / grid.tiles_x;
+            std::vector<uint32_t> got;
+            for (const TriangleRef& r : bin.triangles_in(tx, ty)) {
+                ASSERT_EQ(r.v[0] % 3, 0u);  // no triangle here needs the clipper
+                got.push_back(r.v[0] / 3);
+            }
+            ASSERT_EQ(got, e.triangles[size_t(tile)]) << "round " << round << " tile " << tile;
+            listed += got.size();
+            const int k = bin.range.local(tx, ty);
+            if (got.empty()) continue;
+            ASSERT_GE(k, 0) << "tile " << tile << " has triangles outside the chunk's range";
+            EXPECT_NEAR(bin.covered_area[size_t(k)], e.area[size_t(tile)], 1e-3 * (1.0 + e.area[size_t(tile)]));
+        }
+        EXPECT_EQ(listed, bin.refs.size());
+        if (corner) EXPECT_LT(bin.range.count(), grid.count()) << "round " << round;
+        EXPECT_GT(listed, 150u);
+    }
+}
+
+TEST(Binning, TriangleCoveringNoSampleIsDropped) {
+    // Inside pixel (10, 10) but away from its center: no sample in its bounds, no tile.
+    ShadedVertex<1> v[3];
+    const glm::vec2 p[3] = {{10.1f, 10.1f}, {10.4f, 10.1f}, {10.1f, 10.4f}};
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(finish_vertex(ClipVertex<1>{window_to_clip(p[i].x, p[i].y, W, H), {}}, Viewport{W, H}, v[i]));
+    const uint32_t idx[3] = {0, 1, 2};
+    TriangleBin<1> bin;
+    bin_triangles<1>(idx, v, ClipPlanes::for_viewport(W, H), Viewport{W, H}, FaceState{CullMode::None, FrontFace::CCW},
+                     TileGrid(W, H), bin);
+    EXPECT_TRUE(bin.refs.empty());
+    EXPECT_EQ(bin.range.count(), 0);
+}
