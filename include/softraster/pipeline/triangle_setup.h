@@ -43,6 +43,18 @@ struct Plane {
     T at(T i, T j) const { return a0 + dadx * i + dady * j; }
 };
 
+// Window depth's plane, whose value at the origin is kept in two floats (hi + lo, the
+// double-precision setup value split): far from the camera window depths differ from 1 in
+// their last bits only, and a0 rounded to one float would put up to half a unit in the last
+// place of error into every pixel of the tile, the same for the whole tile (blocks along
+// the crossing of two far planes). Summing the small terms first and adding hi last rounds
+// once: z is the exact plane rounded to float, to within a tiny fraction of a unit.
+struct DepthPlane {
+    float hi = 0, lo = 0, dadx = 0, dady = 0;
+    template <class T>
+    T at(T i, T j) const { return hi + ((lo + dadx * i) + dady * j); }
+};
+
 template <int N>
 struct TriangleSetup {
     std::array<int64_t, 3> A, B, C;  // E_i(p) = A_i p.x + B_i p.y + C_i, p in 24.8 fixed point
@@ -54,7 +66,7 @@ struct TriangleSetup {
     // Interpolation planes, made by setup_planes. A draw may make them only once the triangle
     // is known to cover a sample: in a million-triangle mesh many triangles cover none.
     bool has_planes = false;
-    Plane z;                     // window depth
+    DepthPlane z;                // window depth
     Plane inv_w;                 // 1/w
     std::array<Plane, N> var_w;  // varying / w
 
@@ -105,12 +117,19 @@ void setup_planes(TriangleSetup<N>& t) {
     const double det = x1 * y2 - x2 * y1;
     const double inv_det = det != 0.0 ? 1.0 / det : 0.0;  // unsnapped sliver: flat planes
     const double ox = t.origin_x + 0.5 - w0.x, oy = t.origin_y + 0.5 - w0.y;
-    auto plane = [&](double a0, double a1, double a2) {
+    // The plane's value at the origin pixel and its gradients, in double.
+    auto plane_at_origin = [&](double a0, double a1, double a2) {
         const double d1 = a1 - a0, d2 = a2 - a0;
         const double dadx = (d1 * y2 - d2 * y1) * inv_det, dady = (d2 * x1 - d1 * x2) * inv_det;
-        return Plane{float(a0 + dadx * ox + dady * oy), float(dadx), float(dady)};
+        return std::array<double, 3>{a0 + dadx * ox + dady * oy, dadx, dady};
     };
-    t.z = plane(w0.z, w1.z, w2.z);
+    auto plane = [&](double a0, double a1, double a2) {
+        const auto [at_origin, dadx, dady] = plane_at_origin(a0, a1, a2);
+        return Plane{float(at_origin), float(dadx), float(dady)};
+    };
+    const auto [z0, dzdx, dzdy] = plane_at_origin(w0.z, w1.z, w2.z);
+    const float z_hi = float(z0);
+    t.z = DepthPlane{z_hi, float(z0 - double(z_hi)), float(dzdx), float(dzdy)};
     t.inv_w = plane(w0.inv_w, w1.inv_w, w2.inv_w);
     for (size_t k = 0; k < size_t(N); ++k)
         t.var_w[k] = plane(double(v0.clip.var[k]) * w0.inv_w, double(v1.clip.var[k]) * w1.inv_w, double(v2.clip.var[k]) * w2.inv_w);
