@@ -51,80 +51,22 @@ struct Element {
 
 enum class Format { Ascii, BinaryLE, BinaryBE };
 
-// Reads values one at a time from the body, in whichever encoding the header named.
-class BodyReader {
-public:
-    BodyReader(const std::string& name, const std::string& text, size_t pos, size_t line, Format f)
-        : name_(name), text_(text), pos_(pos), line_(line), format_(f) {}
+// ---- header
 
-    double read(Type t) {
-        if (format_ == Format::Ascii) return read_ascii(t);
-        const size_t n = type_size(t);
-        if (pos_ + n > text_.size()) throw InputError(name_ + ": truncated binary data (file ends early)");
-        unsigned char b[8];
-        std::memcpy(b, text_.data() + pos_, n);
-        pos_ += n;
-        if ((format_ == Format::BinaryBE) == (std::endian::native == std::endian::little))
-            for (size_t i = 0; i < n / 2; ++i) std::swap(b[i], b[n - 1 - i]);
-        switch (t) {
-            case Type::Int8: { int8_t v; std::memcpy(&v, b, 1); return v; }
-            case Type::UInt8: return b[0];
-            case Type::Int16: { int16_t v; std::memcpy(&v, b, 2); return v; }
-            case Type::UInt16: { uint16_t v; std::memcpy(&v, b, 2); return v; }
-            case Type::Int32: { int32_t v; std::memcpy(&v, b, 4); return v; }
-            case Type::UInt32: { uint32_t v; std::memcpy(&v, b, 4); return v; }
-            case Type::Float32: { float v; std::memcpy(&v, b, 4); return double(v); }
-            case Type::Float64: { double v; std::memcpy(&v, b, 8); return v; }
-        }
-        return 0;
-    }
-    [[noreturn]] void fail(const std::string& what) const {
-        throw InputError(format_ == Format::Ascii ? name_ + ":" + std::to_string(line_) + ": " + what : name_ + ": " + what);
-    }
-
-private:
-    double read_ascii(Type t) {
-        for (;;) {  // skip whitespace, counting lines
-            if (pos_ >= text_.size()) throw InputError(name_ + ":" + std::to_string(line_) + ": file ends early (truncated?)");
-            const char c = text_[pos_];
-            if (c == '\n') ++line_;
-            if (c != ' ' && c != '\t' && c != '\r' && c != '\n') break;
-            ++pos_;
-        }
-        const size_t start = pos_;
-        while (pos_ < text_.size() && !std::strchr(" \t\r\n", text_[pos_])) ++pos_;
-        const std::string_view tok(text_.data() + start, pos_ - start);
-        if (is_integer(t)) {
-            int64_t v;
-            if (!parse_int64(tok, v)) fail("'" + std::string(tok.substr(0, 40)) + "' is not an integer");
-            return double(v);
-        }
-        double d;
-        if (!parse_double(tok, d)) fail("'" + std::string(tok.substr(0, 40)) + "' is not a number");
-        return d;
-    }
-
-    const std::string& name_;
-    const std::string& text_;
-    size_t pos_;
-    size_t line_;
-    Format format_;
+struct Header {
+    Format format = Format::Ascii;
+    std::vector<Element> elements;
+    size_t body_start = 0;  // byte offset of the first byte after end_header's line
+    size_t body_line = 1;   // its line number (ascii bodies count lines in errors)
 };
 
-}  // namespace
-
-Mesh load_ply(const std::filesystem::path& path) {
-    const std::string name = path.string();
-    const std::string text = read_whole_file(path);
+Header parse_header(const std::string& name, const std::string& text) {
     auto fail_at = [&](size_t line, const std::string& what) -> InputError {
         return InputError(name + ":" + std::to_string(line) + ": " + what);
     };
-
-    // ---- header
+    Header h;
     size_t pos = 0, line_no = 0;
-    Format format = Format::Ascii;
     bool have_format = false, ended = false;
-    std::vector<Element> elements;
     while (pos < text.size() && !ended) {
         size_t end = text.find('\n', pos);
         if (end == std::string::npos) end = text.size();
@@ -140,9 +82,9 @@ Mesh load_ply(const std::filesystem::path& path) {
         const std::string_view kw = tok[0];
         if (kw == "format") {
             if (tok.size() != 3) throw fail_at(line_no, "bad format line");
-            if (tok[1] == "ascii") format = Format::Ascii;
-            else if (tok[1] == "binary_little_endian") format = Format::BinaryLE;
-            else if (tok[1] == "binary_big_endian") format = Format::BinaryBE;
+            if (tok[1] == "ascii") h.format = Format::Ascii;
+            else if (tok[1] == "binary_little_endian") h.format = Format::BinaryLE;
+            else if (tok[1] == "binary_big_endian") h.format = Format::BinaryBE;
             else throw fail_at(line_no, "unknown format '" + std::string(tok[1]) + "'");
             have_format = true;
         } else if (kw == "comment" || kw == "obj_info") {
@@ -150,9 +92,9 @@ Mesh load_ply(const std::filesystem::path& path) {
             int64_t count;
             if (tok.size() != 3 || !parse_int64(tok[2], count) || count < 0)
                 throw fail_at(line_no, "bad element line (expected 'element NAME COUNT')");
-            elements.push_back({std::string(tok[1]), uint64_t(count), {}});
+            h.elements.push_back({std::string(tok[1]), uint64_t(count), {}});
         } else if (kw == "property") {
-            if (elements.empty()) throw fail_at(line_no, "property before any element");
+            if (h.elements.empty()) throw fail_at(line_no, "property before any element");
             Property p;
             if (tok.size() == 5 && tok[1] == "list") {
                 const auto ct = type_from_name(tok[2]), it = type_from_name(tok[3]);
@@ -166,7 +108,7 @@ Mesh load_ply(const std::filesystem::path& path) {
             } else {
                 throw fail_at(line_no, "bad property line");
             }
-            elements.back().props.push_back(p);
+            h.elements.back().props.push_back(p);
         } else if (kw == "end_header") {
             ended = true;
         } else {
@@ -175,22 +117,30 @@ Mesh load_ply(const std::filesystem::path& path) {
     }
     if (!ended) throw InputError(name + ": PLY header has no end_header (truncated?)");
     if (!have_format) throw InputError(name + ": PLY header has no format line");
+    h.body_start = pos;
+    h.body_line = line_no + 1;
+    return h;
+}
 
-    // ---- what the vertex and face elements hold
-    struct VertexLayout {
-        int x = -1, y = -1, z = -1, nx = -1, ny = -1, nz = -1, u = -1, v = -1, r = -1, g = -1, b = -1, a = -1;
-    } L;
+// ---- what the vertex and face elements hold
+
+struct Layout {
+    int x = -1, y = -1, z = -1, nx = -1, ny = -1, nz = -1, u = -1, v = -1, r = -1, g = -1, b = -1, a = -1;
     int face_list = -1;
     const Element* vertex_el = nullptr;  // the first "vertex" and "face" elements
     const Element* face_el = nullptr;
+};
+
+Layout find_layout(const std::string& name, const std::vector<Element>& elements) {
+    Layout L;
     for (const Element& e : elements) {
         auto find = [&](const char* n) {
             for (size_t i = 0; i < e.props.size(); ++i)
                 if (e.props[i].name == n) return int(i);
             return -1;
         };
-        if (e.name == "vertex" && !vertex_el) {
-            vertex_el = &e;
+        if (e.name == "vertex" && !L.vertex_el) {
+            L.vertex_el = &e;
             L.x = find("x"), L.y = find("y"), L.z = find("z");
             if (L.x < 0 || L.y < 0 || L.z < 0) throw InputError(name + ": vertex element lacks x, y or z");
             L.nx = find("nx"), L.ny = find("ny"), L.nz = find("nz");
@@ -210,27 +160,107 @@ Mesh load_ply(const std::filesystem::path& path) {
             }
             for (int c : {L.x, L.y, L.z})
                 if (e.props[size_t(c)].is_list) throw InputError(name + ": vertex position cannot be a list");
-        } else if (e.name == "face" && !face_el) {
-            face_el = &e;
-            face_list = find("vertex_indices");
-            if (face_list < 0) face_list = find("vertex_index");
-            if (face_list < 0) throw InputError(name + ": face element lacks vertex_indices");
-            const Property& p = e.props[size_t(face_list)];
+        } else if (e.name == "face" && !L.face_el) {
+            L.face_el = &e;
+            L.face_list = find("vertex_indices");
+            if (L.face_list < 0) L.face_list = find("vertex_index");
+            if (L.face_list < 0) throw InputError(name + ": face element lacks vertex_indices");
+            const Property& p = e.props[size_t(L.face_list)];
             if (!p.is_list) throw InputError(name + ": vertex_indices must be a list");
             if (!is_integer(p.type)) throw InputError(name + ": vertex_indices must have an integer type");
         }
     }
-    if (!vertex_el) throw InputError(name + ": no vertex element");
+    if (!L.vertex_el) throw InputError(name + ": no vertex element");
+    return L;
+}
 
-    // ---- body
-    BodyReader in(name, text, pos, line_no + 1, format);
-    std::vector<MeshVertex> verts;
-    std::vector<uint32_t> tris;  // indices into verts
-    const bool has_normals = L.nx >= 0;
+// ---- the body: values one at a time, as text or as binary numbers
+
+class AsciiBody {
+public:
+    AsciiBody(const std::string& name, const std::string& text, size_t pos, size_t line)
+        : name_(name), text_(text), pos_(pos), line_(line) {}
+
+    double read(Type t) {
+        for (;;) {  // skip whitespace, counting lines
+            if (pos_ >= text_.size()) fail("file ends early (truncated?)");
+            const char c = text_[pos_];
+            if (c == '\n') ++line_;
+            if (c != ' ' && c != '\t' && c != '\r' && c != '\n') break;
+            ++pos_;
+        }
+        const size_t start = pos_;
+        while (pos_ < text_.size() && !std::strchr(" \t\r\n", text_[pos_])) ++pos_;
+        const std::string_view tok(text_.data() + start, pos_ - start);
+        if (is_integer(t)) {
+            int64_t v;
+            if (!parse_int64(tok, v)) fail_token(tok, "is not an integer");
+            return double(v);
+        }
+        double d;
+        if (!parse_double(tok, d)) fail_token(tok, "is not a number");
+        return d;
+    }
+    [[noreturn]] void fail(const std::string& what) const { throw InputError(name_ + ":" + std::to_string(line_) + ": " + what); }
+
+private:
+    // Out of line and cold: the message is built only on the error path.
+    [[noreturn, gnu::noinline, gnu::cold]] void fail_token(std::string_view tok, const char* what) const {
+        std::string message = "'";
+        message.append(tok.substr(0, 40));
+        message += "' ";
+        message += what;
+        fail(message);
+    }
+
+    const std::string& name_;
+    const std::string& text_;
+    size_t pos_, line_;
+};
+
+class BinaryBody {
+public:
+    BinaryBody(const std::string& name, const std::string& text, size_t pos, bool big_endian)
+        : name_(name), text_(text), pos_(pos), swap_(big_endian == (std::endian::native == std::endian::little)) {}
+
+    double read(Type t) {
+        const size_t n = type_size(t);
+        if (pos_ + n > text_.size()) fail("truncated binary data (file ends early)");
+        unsigned char b[8];
+        std::memcpy(b, text_.data() + pos_, n);
+        pos_ += n;
+        if (swap_)
+            for (size_t i = 0; i < n / 2; ++i) std::swap(b[i], b[n - 1 - i]);
+        switch (t) {
+            case Type::Int8: { int8_t v; std::memcpy(&v, b, 1); return v; }
+            case Type::UInt8: return b[0];
+            case Type::Int16: { int16_t v; std::memcpy(&v, b, 2); return v; }
+            case Type::UInt16: { uint16_t v; std::memcpy(&v, b, 2); return v; }
+            case Type::Int32: { int32_t v; std::memcpy(&v, b, 4); return v; }
+            case Type::UInt32: { uint32_t v; std::memcpy(&v, b, 4); return v; }
+            case Type::Float32: { float v; std::memcpy(&v, b, 4); return double(v); }
+            case Type::Float64: { double v; std::memcpy(&v, b, 8); return v; }
+        }
+        return 0;
+    }
+    [[noreturn]] void fail(const std::string& what) const { throw InputError(name_ + ": " + what); }
+
+private:
+    const std::string& name_;
+    const std::string& text_;
+    size_t pos_;
+    bool swap_;
+};
+
+// Reads every element of the body in order with `in`, keeping the vertices and the faces'
+// triangles (fanned) of the layout's elements and skipping the rest.
+template <class Body>
+void read_body(Body& in, const Header& h, const Layout& L, size_t file_size, std::vector<MeshVertex>& verts,
+               std::vector<uint32_t>& tris) {
     std::vector<double> val;
-    for (const Element& e : elements) {
-        const bool is_vertex = &e == vertex_el, is_face = &e == face_el;
-        if (is_vertex && e.count > text.size()) in.fail("vertex count " + std::to_string(e.count) + " exceeds the file size");
+    for (const Element& e : h.elements) {
+        const bool is_vertex = &e == L.vertex_el, is_face = &e == L.face_el;
+        if (is_vertex && e.count > file_size) in.fail("vertex count " + std::to_string(e.count) + " exceeds the file size");
         for (uint64_t k = 0; k < e.count; ++k) {
             val.assign(e.props.size(), 0.0);
             for (size_t pi = 0; pi < e.props.size(); ++pi) {
@@ -240,8 +270,8 @@ Mesh load_ply(const std::filesystem::path& path) {
                     continue;
                 }
                 const double n = in.read(p.count_type);
-                if (n < 0 || n > double(text.size())) in.fail("bad list length " + std::to_string(int64_t(n)));
-                if (is_face && int(pi) == face_list) {
+                if (n < 0 || n > double(file_size)) in.fail("bad list length " + std::to_string(int64_t(n)));
+                if (is_face && int(pi) == L.face_list) {
                     if (n < 3) in.fail("face with " + std::to_string(int64_t(n)) + " corners (need at least 3)");
                     uint32_t first = 0, prev = 0;
                     for (int64_t c = 0; c < int64_t(n); ++c) {
@@ -265,7 +295,7 @@ Mesh load_ply(const std::filesystem::path& path) {
             };
             MeshVertex v;
             v.position = glm::vec3(float(get(L.x)), float(get(L.y)), float(get(L.z)));
-            if (has_normals) v.normal = glm::vec3(finite(L.nx, "normal"), finite(L.ny, "normal"), finite(L.nz, "normal"));
+            if (L.nx >= 0) v.normal = glm::vec3(finite(L.nx, "normal"), finite(L.ny, "normal"), finite(L.nz, "normal"));
             if (L.u >= 0) v.uv = glm::vec2(finite(L.u, "texture coordinate"), finite(L.v, "texture coordinate"));
             if (L.r >= 0) {
                 auto channel = [&](int i) {
@@ -277,9 +307,27 @@ Mesh load_ply(const std::filesystem::path& path) {
             verts.push_back(v);
         }
     }
+}
+
+}  // namespace
+
+Mesh load_ply(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    const std::string text = read_whole_file(path);
+    const Header header = parse_header(name, text);
+    const Layout layout = find_layout(name, header.elements);
+    std::vector<MeshVertex> verts;
+    std::vector<uint32_t> tris;  // indices into verts
+    if (header.format == Format::Ascii) {
+        AsciiBody in(name, text, header.body_start, header.body_line);
+        read_body(in, header, layout, text.size(), verts, tris);
+    } else {
+        BinaryBody in(name, text, header.body_start, header.format == Format::BinaryBE);
+        read_body(in, header, layout, text.size(), verts, tris);
+    }
 
     Mesh mesh;
-    if (has_normals) {
+    if (layout.nx >= 0) {
         mesh.vertices = std::move(verts);
         mesh.indices = std::move(tris);
     } else {
