@@ -63,12 +63,14 @@ void add_to_tiles(TriangleBin<N>& bin, const TileGrid& grid, TriangleRef ref, Re
     const Rect r = intersect(bounds, Rect{0, 0, grid.width, grid.height});
     if (r.empty()) return;
     const float area = float(area2 < 0 ? -area2 : area2) * (0.5f / float(kSubpixelOne * kSubpixelOne));
-    for (int ty = r.y0 / kTileSize; ty <= (r.y1 - 1) / kTileSize; ++ty)
-        for (int tx = r.x0 / kTileSize; tx <= (r.x1 - 1) / kTileSize; ++tx) {
+    const int tx0 = r.x0 / kTileSize, tx1 = (r.x1 - 1) / kTileSize, ty0 = r.y0 / kTileSize, ty1 = (r.y1 - 1) / kTileSize;
+    bin.range.include(tx0, ty0);
+    bin.range.include(tx1, ty1);
+    for (int ty = ty0; ty <= ty1; ++ty)
+        for (int tx = tx0; tx <= tx1; ++tx) {
             const int w = std::min(r.x1, (tx + 1) * kTileSize) - std::max(r.x0, tx * kTileSize);
             const int h = std::min(r.y1, (ty + 1) * kTileSize) - std::max(r.y0, ty * kTileSize);
             bin.pending.push_back({uint16_t(tx), uint16_t(ty), std::min(float(w * h), area), ref});
-            bin.range.include(tx, ty);
         }
 }
 
@@ -79,15 +81,18 @@ void group_by_tile(TriangleBin<N>& bin) {
     const size_t tiles = size_t(bin.range.count());
     bin.tile_begin.assign(tiles + 1, 0);
     bin.covered_area.assign(tiles, 0.0f);
+    // Every pending tile lies in the range: its index there needs no check.
+    const TileRange& r = bin.range;
+    auto local = [&](const auto& p) { return size_t((p.ty - r.y0) * r.width() + (p.tx - r.x0)); };
     for (const auto& p : bin.pending) {
-        const auto k = size_t(bin.range.local(p.tx, p.ty));
+        const size_t k = local(p);
         ++bin.tile_begin[k + 1];
         bin.covered_area[k] += p.area;
     }
     for (size_t k = 1; k <= tiles; ++k) bin.tile_begin[k] += bin.tile_begin[k - 1];
     bin.refs.resize(bin.pending.size());
     std::vector<uint32_t>& cursor = bin.tile_begin;  // reuse: advance each start, then shift back
-    for (const auto& p : bin.pending) bin.refs[cursor[size_t(bin.range.local(p.tx, p.ty))]++] = p.ref;
+    for (const auto& p : bin.pending) bin.refs[cursor[local(p)]++] = p.ref;
     for (size_t k = tiles; k > 0; --k) bin.tile_begin[k] = bin.tile_begin[k - 1];
     bin.tile_begin[0] = 0;
 }

@@ -51,7 +51,7 @@ struct DepthTest {
         if (!enabled) return covered;
         const simd::f8 stored = simd::load_group<simd::f8>(depth, at, width);
         const simd::i8 pass = covered & depth_compare(func, z, stored);
-        if (write && simd::any(pass)) simd::store_group(depth, at, width, simd::select(pass, z, stored));
+        if (write) simd::store_group(depth, at, width, simd::select(pass, z, stored));  // (unchanged where none passes)
         return pass;
     }
 
