@@ -156,10 +156,10 @@ program alone (`--target softraster`, Release, dependencies installed), from scr
 
 | change | program build | full Release build with tests |
 |---|---|---|
-| before (one copy per blend mode, both CPU copies flattened, loop unswitching) | about 9 min | 10 min 55 s |
+| before (one copy per blend mode, both CPU copies flattened, loop unswitching) | 9 min 45 s for showcase.sh on a fresh machine (the issue's measurement) | 10 min 55 s |
 | the generic copy not flattened; vertex processing and binning compiled once per shader / per varying count, not per blend mode and sample count; no line and point code for scene draws | | 5 min 41 s |
 | `-fno-unswitch-loops` (the flattened AVX2 loops had whole loop nests copied per run-time condition: record_Lambert_draw 122 -> 63 s, no bench row slower) | 3 min 27 s | |
-| blended draws compiled once (the mode read per group), texture lookups of eight lanes out of line (one call per eight texels instead of the sampler inlined per lane) | 2 min 48 s | about 4 min 20 s |
+| blended draws compiled once (the mode read per group), texture lookups of eight lanes out of line (one call per eight texels instead of the sampler inlined per lane) | 2 min 48 s | 4 min 16 s (a fresh clone's `.ci/run`) |
 
 Tried and dropped: `-O2` for everything (the program built in 2 min 32 s, but
 bench_highpoly took 31% longer, bench_many_objects 23%); a depth-only path for opaque
