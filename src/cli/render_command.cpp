@@ -20,7 +20,7 @@ Run add_render_command(CLI::App& app) {
     cmd->add_option("--threads", opt->threads, "Worker threads (0: one per core); the picture is the same for any count")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
-    cmd->footer("Example: softraster render scenes/tri_basic.json -o tri.png");
+    cmd->footer("Example: softraster render scenes/tri_basic.json -o tri.png\nThe scene format: docs/scene-format.md in the softraster sources.");
     return [opt] {
         const std::filesystem::path scene_path = opt->scene;
         const std::filesystem::path out =
