@@ -61,7 +61,7 @@ def main(argv):
 REPORT_HEAD = """# Conformance
 
 softraster's claim is that it draws what a conformant OpenGL implementation draws for the
-scene format (`../shared/spec/scene-format.md`, version 1). The test suite checks it in two
+scene format (`docs/scene-format.md`, version 1). The test suite checks it in two
 ways, both run by ctest:
 
 1. `conformance.*`: the scenes in `tests/conformance/` (copied from `../shared`) against the
