@@ -37,7 +37,7 @@ void Context::list_commands_by_tile(const TileGrid& grid) {
         const TileRange& r = c.tiles();
         for (int ty = r.y0; ty < r.y1; ++ty)
             for (int tx = r.x0; tx < r.x1; ++tx) {
-                const int t = ty * grid.tiles_x + tx;
+                const int t = grid.tile_index(tx, ty);
                 if (c.triangles_in_tile(t) > 0) f(size_t(t));
             }
     };

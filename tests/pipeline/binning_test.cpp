@@ -80,7 +80,9 @@ TEST(Binning, EachTriangleInTheTilesItsBoundsTouchInDrawOrder) {
             EXPECT_NEAR(bin.covered_area[size_t(k)], e.area[size_t(tile)], 1e-3 * (1.0 + e.area[size_t(tile)]));
         }
         EXPECT_EQ(listed, bin.refs.size());
-        if (corner) EXPECT_LT(bin.range.count(), grid.count()) << "round " << round;
+        if (corner) {
+            EXPECT_LT(bin.range.count(), grid.count()) << "round " << round;
+        }
         EXPECT_GT(listed, 150u);
     }
 }

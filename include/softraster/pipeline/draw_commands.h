@@ -73,7 +73,7 @@ protected:
     template <int N>
     void sum_bins(const std::vector<TriangleBin<N>>& bins, const TileGrid& grid) {
         binned_ = true;
-        tiles_x_ = grid.tiles_x;
+        grid_ = grid;
         range_ = {};
         for (const TriangleBin<N>& bin : bins)
             if (bin.range.count() > 0) range_.include(bin.range.x0, bin.range.y0), range_.include(bin.range.x1 - 1, bin.range.y1 - 1);
@@ -87,13 +87,13 @@ protected:
                     tile_area_[k] += bin.covered_area[b];
                 }
     }
-    int local_tile(int tile) const { return binned_ ? range_.local(tile % tiles_x_, tile / tiles_x_) : -1; }
+    int local_tile(int tile) const { return binned_ ? range_.local(grid_.tile_x(tile), grid_.tile_y(tile)) : -1; }
 
     bool allows_hsr_ = false;
 
 private:
     bool binned_ = false;
-    int tiles_x_ = 1;
+    TileGrid grid_;  // the grid binned for
     TileRange range_;
     std::vector<uint32_t> tile_triangles_;  // per tile of range_
     std::vector<double> tile_area_;
@@ -185,18 +185,18 @@ public:
 
     uint64_t draw_tile(int tile, const Rect& rect, const DrawTarget& target) override {
         const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), triangles(), *target.fb};
-        const int tx = tile % target.grid.tiles_x, ty = tile / target.grid.tiles_x;
+        const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
         return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
     }
 
     void visibility_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, uint32_t* owners) override {
         if constexpr (!Blended && PureShader<S>)
-            phases::visibility_pass<Samples>(triangles(), state_, *target.fb, tile % target.grid.tiles_x,
-                                             tile / target.grid.tiles_x, rect, draw, owners);
+            phases::visibility_pass<Samples>(triangles(), state_, *target.fb, target.grid.tile_x(tile),
+                                             target.grid.tile_y(tile), rect, draw, owners);
     }
     uint64_t shading_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, const uint32_t* owners) override {
         if constexpr (!Blended && PureShader<S>) {
-            const int tx = tile % target.grid.tiles_x, ty = tile / target.grid.tiles_x;
+            const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
             return simd::on_best_path([&]<bool>() {
                 return softraster::shading_pass<Samples>(shader_, triangles(), state_, *target.fb, tx, ty, rect, draw, owners);
             });

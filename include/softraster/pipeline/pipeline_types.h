@@ -26,8 +26,12 @@ struct TileGrid {
     TileGrid() = default;
     TileGrid(int w, int h) : width(w), height(h), tiles_x((w + kTileSize - 1) / kTileSize), tiles_y((h + kTileSize - 1) / kTileSize) {}
     int count() const { return tiles_x * tiles_y; }
+    // Tile t's column and row, and back.
+    int tile_x(int t) const { return t % tiles_x; }
+    int tile_y(int t) const { return t / tiles_x; }
+    int tile_index(int tx, int ty) const { return ty * tiles_x + tx; }
     Rect tile_rect(int t) const {
-        const int x = (t % tiles_x) * kTileSize, y = (t / tiles_x) * kTileSize;
+        const int x = tile_x(t) * kTileSize, y = tile_y(t) * kTileSize;
         return {x, y, std::min(x + kTileSize, width), std::min(y + kTileSize, height)};
     }
 };
