@@ -55,7 +55,10 @@ void Context::execute() {
     target.grid = TileGrid(fb_->width(), fb_->height());
     target.planes = ClipPlanes::for_viewport(fb_->width(), fb_->height());
     target.viewport = {fb_->width(), fb_->height()};
-    for (auto& c : commands_) c->prepare();
+    for (auto& c : commands_) {
+        c->prepare();
+        if (c->uses_stencil()) fb_->add_stencil();
+    }
 
     // The front end. A small draw (one chunk of vertices, one of primitives) is one item:
     // its primitives are binned right after its vertices are processed, while they are still

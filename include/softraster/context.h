@@ -25,8 +25,9 @@
 
 namespace softraster {
 
-// Calls f.template operator()<Samples, Blended>() with the framebuffer's sample count and
-// whether the state blends as compile-time constants, so inner loops never branch on them.
+// Calls f.template operator()<Samples, Blended>() with the framebuffer's sample count (1 or
+// 4: the fast back end's) and whether the state blends as compile-time constants, so inner
+// loops never branch on them.
 template <class F>
 void dispatch_samples_blending(int samples, BlendMode blend, F&& f) {
     auto with_samples = [&]<bool Blended>() {
@@ -44,7 +45,10 @@ public:
 
     RenderState state;  // applies to the draws recorded after it is set
 
-    void clear(const glm::vec4& color, float depth = 1.0f) { commands_.push_back(std::make_unique<ClearCommand>(color, depth)); }
+    // Clears color, depth and (if the framebuffer has one) stencil.
+    void clear(const glm::vec4& color, float depth = 1.0f, uint8_t stencil = 0) {
+        commands_.push_back(std::make_unique<ClearCommand>(color, depth, stencil));
+    }
 
     // Records a draw of `indices` (three per triangle, two per line, one per point).
     // Throws std::out_of_range for an index past the end of `vertices`.
@@ -53,15 +57,17 @@ public:
               std::span<const uint32_t> indices) {
         if (topology == Topology::Triangles) return draw_triangles(shader, vertices, indices);
         validate_indices(indices, vertices.size(), topology);
-        dispatch_samples_blending(fb_->samples(), state.blend, [&]<int Samples, bool Blended>() {
-            commands_.push_back(std::make_unique<LinePointCommand<S, Samples, Blended>>(topology, shader, state, vertices, indices));
-        });
+        commands_.push_back(std::make_unique<LinePointCommand<S>>(topology, shader, state, fb_->samples(), vertices, indices));
     }
     // The same for triangles only: a caller that draws nothing else compiles no line and
     // point code for its shaders.
     template <Shader S>
     void draw_triangles(const S& shader, std::span<const typename S::Vertex> vertices, std::span<const uint32_t> indices) {
         validate_indices(indices, vertices.size(), Topology::Triangles);
+        if (needs_general_back_end(state, fb_->samples())) {
+            commands_.push_back(std::make_unique<GeneralTriangleCommand<S>>(shader, state, fb_->samples(), vertices, indices));
+            return;
+        }
         dispatch_samples_blending(fb_->samples(), state.blend, [&]<int Samples, bool Blended>() {
             commands_.push_back(std::make_unique<TriangleCommand<S, Samples, Blended>>(shader, state, vertices, indices));
         });

@@ -1,4 +1,5 @@
-// The render target: per-sample RGBA8 color and 32-bit float depth in flat arrays.
+// The render target: per-sample RGBA8 color, 32-bit float depth and, when a draw uses it,
+// an 8-bit stencil value, in flat arrays.
 //
 // Sample s of pixel (x, y) lives at index (y * width + x) * samples + s, so the samples of a
 // pixel are adjacent (one cache line for 4x MSAA color) and a single-sampled buffer is a
@@ -35,11 +36,13 @@ public:
         : width_(width), height_(height), samples_(samples) {
         if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize)
             throw std::invalid_argument("framebuffer size must be 1..16384 in each direction");
-        if (samples != 1 && samples != 4) throw std::invalid_argument("samples must be 1 or 4");
+        if (!valid_samples(samples)) throw std::invalid_argument("samples must be 1, 2, 4, 8 or 16");
         const size_t n = size_t(width) * size_t(height) * size_t(samples);
         color_.resize(n);
         depth_.resize(n, 1.0f);
     }
+
+    static constexpr bool valid_samples(int n) { return n == 1 || n == 2 || n == 4 || n == 8 || n == 16; }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -47,6 +50,15 @@ public:
 
     void clear_color(const glm::vec4& c) { std::fill(color_.begin(), color_.end(), quantize_rgba8(c)); }
     void clear_depth(float z = 1.0f) { std::fill(depth_.begin(), depth_.end(), z); }
+
+    // The stencil buffer exists once asked for (Context does when a draw tests stencil),
+    // cleared to 0; clears set it from then on.
+    bool has_stencil() const { return !stencil_.empty(); }
+    void add_stencil() {
+        if (stencil_.empty()) stencil_.resize(color_.size(), 0);
+    }
+    uint8_t* stencil_data() { return stencil_.data(); }
+    const uint8_t* stencil_data() const { return stencil_.data(); }
 
     size_t sample_index(int x, int y, int s = 0) const {
         return (size_t(y) * size_t(width_) + size_t(x)) * size_t(samples_) + size_t(s);
@@ -63,6 +75,7 @@ private:
     int width_, height_, samples_;
     std::vector<Rgba8> color_;
     std::vector<float> depth_;
+    std::vector<uint8_t> stencil_;
 };
 
 }  // namespace softraster

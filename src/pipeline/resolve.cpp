@@ -13,6 +13,16 @@ void resolve(const Framebuffer& fb, Image& img) {
         std::copy(fb.color_data(), fb.color_data() + pixels, img.pixels.begin());
         return;
     }
+    if (fb.samples() != 4) {  // 2, 8, 16: the same rounding, channel by channel
+        const auto n = unsigned(fb.samples());
+        const Rgba8* c = fb.color_data();
+        for (size_t p = 0; p < pixels; ++p, c += n) {
+            unsigned sum[4] = {n / 2, n / 2, n / 2, n / 2};
+            for (unsigned i = 0; i < n; ++i) sum[0] += c[i].r, sum[1] += c[i].g, sum[2] += c[i].b, sum[3] += c[i].a;
+            img.pixels[p] = {uint8_t(sum[0] / n), uint8_t(sum[1] / n), uint8_t(sum[2] / n), uint8_t(sum[3] / n)};
+        }
+        return;
+    }
     // 4x: average each channel of the four samples, floor(mean + 0.5) = (sum + 2) >> 2. The
     // four RGBA8 samples are four 32-bit words; channels 0 and 2, and 1 and 3, are summed two
     // at a time in 16-bit lanes (SIMD within a register).

@@ -1,4 +1,4 @@
-// Stage 9a, the depth test (the depth-stencil stage: a stencil test joins it here).
+// Stage 9a, the depth and stencil tests.
 //
 // Each covered sample's interpolated window depth z is compared with the depth stored for
 // that sample, by one of GL's eight functions; a sample that fails is not drawn. Where a
@@ -9,8 +9,12 @@
 // must not leave depth behind for a fragment it drops, so its draw tests first and writes
 // after shading (test_pixel, then write_pixel); every other draw tests and writes at once.
 //
-// The back end takes this stage's state as a template parameter (DepthStencil), so that
-// draws whose state has no stencil pay nothing for it.
+// With a stencil test (the general back end only, general_back_end.h), each sample first
+// compares (ref & read_mask) with (stored & read_mask) by the face's function; a sample that
+// fails gets the face's `fail` operation and is not drawn; one that then fails the depth test
+// gets `depth_fail`; one that passes both gets `pass` (and its depth written). Operations
+// write only the bits of write_mask: stored = (stored & ~write_mask) | (new & write_mask).
+// Front and back faces have their own state. The fast back end has no stencil code at all.
 #pragma once
 #include <cstdint>
 
@@ -36,7 +40,7 @@ inline auto depth_compare(DepthFunc f, T z, T stored) -> decltype(z < stored) {
     return Mask{};
 }
 
-// The depth test of one draw.
+// The depth test of one draw (the fast back end's whole depth-stencil stage).
 struct DepthTest {
     bool enabled = true;
     DepthFunc func = DepthFunc::Less;
@@ -77,6 +81,59 @@ struct DepthTest {
     unsigned test_and_write_pixel(float* depth, unsigned covered, const float* z) const {
         const unsigned pass = test_pixel<Samples>(depth, covered, z);
         write_pixel<Samples>(depth, pass, z);
+        return pass;
+    }
+};
+
+// The stencil value after operation `op` (before the write mask).
+inline uint8_t stencil_op_result(StencilOp op, uint8_t stored, uint8_t ref) {
+    switch (op) {
+        case StencilOp::Keep: return stored;
+        case StencilOp::Zero: return 0;
+        case StencilOp::Replace: return ref;
+        case StencilOp::Incr: return stored == 255 ? 255 : uint8_t(stored + 1);
+        case StencilOp::IncrWrap: return uint8_t(stored + 1);
+        case StencilOp::Decr: return stored == 0 ? 0 : uint8_t(stored - 1);
+        case StencilOp::DecrWrap: return uint8_t(stored - 1);
+        case StencilOp::Invert: return uint8_t(~stored);
+    }
+    return stored;
+}
+inline void apply_stencil_op(const StencilFace& f, StencilOp op, uint8_t& stored) {
+    stored = uint8_t((stored & ~f.write_mask) | (stencil_op_result(op, stored, f.ref) & f.write_mask));
+}
+
+// The depth and stencil tests of one draw, sample by sample.
+struct DepthStencilTest {
+    DepthTest depth;
+    bool stencil = false;
+    StencilFace front, back;
+
+    DepthStencilTest() = default;
+    explicit DepthStencilTest(const RenderState& st)
+        : depth(st), stencil(st.stencil_test), front(st.stencil_front), back(st.stencil_back) {}
+
+    // The samples of one pixel in `covered` (of `samples`), at depths z[s]: tests, stencil
+    // operations and depth writes in GL's order; returns the samples that pass both tests.
+    unsigned test_and_write(float* stored_z, uint8_t* stored_stencil, int samples, unsigned covered, const float* z,
+                            bool front_facing) const {
+        const StencilFace& f = front_facing ? front : back;
+        unsigned pass = 0;
+        for (int s = 0; s < samples; ++s) {
+            if (!(covered & (1u << s))) continue;
+            if (stencil) {
+                uint8_t& st = stored_stencil[s];
+                if (!depth_compare(f.func, unsigned(f.ref & f.read_mask), unsigned(st & f.read_mask))) {
+                    apply_stencil_op(f, f.fail, st);
+                    continue;
+                }
+            }
+            const bool depth_pass = !depth.enabled || depth_compare(depth.func, z[s], stored_z[s]);
+            if (stencil) apply_stencil_op(f, depth_pass ? f.pass : f.depth_fail, stored_stencil[s]);
+            if (!depth_pass) continue;
+            if (depth.write) stored_z[s] = z[s];
+            pass |= 1u << s;
+        }
         return pass;
     }
 };

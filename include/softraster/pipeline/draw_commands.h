@@ -19,6 +19,7 @@
 
 #include "softraster/framebuffer.h"
 #include "softraster/pipeline/binning.h"
+#include "softraster/pipeline/general_back_end.h"
 #include "softraster/pipeline/hidden_surface_removal.h"
 #include "softraster/pipeline/line_rasterization.h"
 #include "softraster/pipeline/tile_back_end.h"
@@ -63,12 +64,22 @@ public:
         return k < 0 ? 0.0 : tile_area_[size_t(k)];
     }
 
+    // Whether the command tests stencil (the framebuffer then needs a stencil buffer).
+    virtual bool uses_stencil() const { return false; }
+
     // Hidden-surface removal (hidden_surface_removal.h), for commands that allow it.
     bool allows_hidden_surface_removal() const { return allows_hsr_; }
     virtual void visibility_pass(int, const Rect&, const DrawTarget&, uint32_t /*draw*/, uint32_t* /*owners*/) {}
     virtual uint64_t shading_pass(int, const Rect&, const DrawTarget&, uint32_t /*draw*/, const uint32_t* /*owners*/) { return 0; }
 
 protected:
+    // The part of a tile's rectangle the draw may touch: all of it, or its cut with the scissor.
+    static Rect scissored(const Rect& rect, const RenderState& st) {
+        if (!st.scissor_test) return rect;
+        const ScissorRect& s = st.scissor;
+        return intersect(rect, Rect{s.x, s.y, s.x + s.width, s.y + s.height});
+    }
+
     // The per-tile totals of a command binned in `bins`, over the tiles any chunk touches.
     template <int N>
     void sum_bins(const std::vector<TriangleBin<N>>& bins, const TileGrid& grid) {
@@ -101,7 +112,7 @@ private:
 
 class ClearCommand final : public Command {
 public:
-    ClearCommand(const glm::vec4& color, float depth) : color_(quantize_rgba8(color)), depth_(depth) {}
+    ClearCommand(const glm::vec4& color, float depth, uint8_t stencil = 0) : color_(quantize_rgba8(color)), depth_(depth), stencil_(stencil) {}
     uint64_t draw_tile(int, const Rect& r, const DrawTarget& target) override {
         Framebuffer& fb = *target.fb;
         const size_t n = size_t(r.x1 - r.x0) * size_t(fb.samples());
@@ -122,6 +133,7 @@ public:
             }
             std::fill_n(reinterpret_cast<uint32_t*>(fb.color_data() + fb.sample_index(r.x0, y)), n, color);
             std::fill_n(fb.depth_data() + fb.sample_index(r.x0, y), n, depth_);
+            if (fb.has_stencil()) std::fill_n(fb.stencil_data() + fb.sample_index(r.x0, y), n, stencil_);
         }
         return 0;
     }
@@ -129,6 +141,7 @@ public:
 private:
     Rgba8 color_;
     float depth_;
+    uint8_t stencil_;
 };
 
 inline constexpr size_t kVertexChunk = 16384;
@@ -183,7 +196,9 @@ public:
     }
     void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
 
-    uint64_t draw_tile(int tile, const Rect& rect, const DrawTarget& target) override {
+    uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
+        const Rect rect = scissored(tile_rect, state_);
+        if (rect.empty()) return 0;
         const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), triangles(), *target.fb};
         const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
         return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
@@ -215,18 +230,70 @@ private:
     std::vector<TriangleBin<N>> bins_;
 };
 
+// A triangle draw in the general back end (general_back_end.h): the same front end, then
+// one fragment at a time with every per-fragment operation. Compiled once per shader.
+template <Shader S>
+class GeneralTriangleCommand final : public Command {
+public:
+    static constexpr int N = kVaryingCount<typename S::Varyings>;
+    using Vertex = typename S::Vertex;
+
+    GeneralTriangleCommand(const S& shader, const RenderState& state, int samples, std::span<const Vertex> vertices,
+                           std::span<const uint32_t> indices)
+        : shader_(shader), state_(state), ops_(state, samples, !PureShader<S>), vertices_(vertices), indices_(indices) {}
+
+    bool uses_stencil() const override { return state_.stencil_test; }
+    void prepare() override {
+        post_.resize(vertices_.size());
+        bins_.resize(primitive_chunks());
+    }
+    size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
+    void process_vertex_chunk(size_t c, const DrawTarget& target) override {
+        const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
+        phases::process_vertices(shader_, vertices_, begin, end, target, std::span<ShadedVertex<N>>(post_));
+    }
+    size_t primitive_chunks() const override { return (indices_.size() / 3 + kTriangleChunk - 1) / kTriangleChunk; }
+    void bin_primitive_chunk(size_t c, const DrawTarget& target) override {
+        const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
+        with_sample_count(ops_.samples, [&]<int Samples>() {
+            phases::bin_triangles<Samples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), target,
+                                           FaceState{state_.cull, state_.front_face}, bins_[c]);
+        });
+    }
+    void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
+
+    uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
+        const Rect rect = scissored(tile_rect, state_);
+        if (rect.empty()) return 0;
+        const BinnedTriangles<N> triangles{std::span<const TriangleBin<N>>(bins_), post_.data()};
+        return draw_tile_general(shader_, ops_, state_, triangles, *target.fb, target.grid.tile_x(tile), target.grid.tile_y(tile), rect);
+    }
+
+private:
+    S shader_;
+    RenderState state_;
+    FragmentOps ops_;
+    std::vector<ShadedVertex<N>> post_;
+    std::span<const Vertex> vertices_;
+    std::span<const uint32_t> indices_;
+    std::vector<TriangleBin<N>> bins_;
+};
+
 // Lines and points: few and cheap, so the front end keeps them as one list (clipped and in
-// window space) and every tile walks all of them, drawing only its own pixels.
-template <Shader S, int Samples, bool Blended>
+// window space) and every tile walks all of them, drawing only its own pixels, through the
+// general back end's per-fragment stage (every sample of a pixel the primitive covers).
+template <Shader S>
 class LinePointCommand final : public Command {
 public:
     static constexpr int N = kVaryingCount<typename S::Varyings>;
     using Vertex = typename S::Vertex;
 
-    LinePointCommand(Topology topology, const S& shader, const RenderState& state, std::span<const Vertex> vertices,
+    LinePointCommand(Topology topology, const S& shader, const RenderState& state, int samples, std::span<const Vertex> vertices,
                      std::span<const uint32_t> indices)
-        : topology_(topology), shader_(shader), state_(state), vertices_(vertices), indices_(indices) {}
+        : topology_(topology), shader_(shader), state_(state), ops_(state, samples, !PureShader<S>), vertices_(vertices),
+          indices_(indices) {}
 
+    bool uses_stencil() const override { return state_.stencil_test; }
     size_t primitive_chunks() const override { return 1; }
     void bin_primitive_chunk(size_t, const DrawTarget& target) override {
         std::vector<ShadedVertex<N>> post(vertices_.size());
@@ -235,15 +302,16 @@ public:
         assemble_lines_points(topology_, indices_, post.data(), target.viewport, window_);
     }
 
-    uint64_t draw_tile(int, const Rect& rect, const DrawTarget& target) override {
+    uint64_t draw_tile(int, const Rect& tile_rect, const DrawTarget& target) override {
         using V = typename S::Varyings;
-        const DepthTest depth(state_);
+        const Rect rect = scissored(tile_rect, state_);
+        if (rect.empty()) return 0;
         uint64_t shaded = 0;
+        const unsigned all = (1u << ops_.samples) - 1;
         auto fragment = [&](int x, int y, float z, auto&& make_varyings) {
-            std::array<float, Samples> zs;
+            std::array<float, kMaxSamples> zs;
             zs.fill(z);
-            shade_fragment<Samples, Blended>(shader_, depth, state_, *target.fb, x, y, (1u << Samples) - 1, zs.data(), z,
-                                       true, make_varyings, shaded);
+            general_fragment(shader_, ops_, *target.fb, x, y, all, zs.data(), z, true, make_varyings, shaded);
         };
         if (topology_ == Topology::Points) {
             for (const WindowVertex<N>& p : window_)
@@ -267,6 +335,7 @@ private:
     Topology topology_;
     S shader_;
     RenderState state_;
+    FragmentOps ops_;
     std::span<const Vertex> vertices_;
     std::span<const uint32_t> indices_;
     std::vector<WindowVertex<N>> window_;

@@ -26,8 +26,9 @@ namespace softraster {
 
 // Draw state that allows the two-pass scheme.
 inline bool allows_hidden_surface_removal(const RenderState& st) {
+    // (A scissor would give the draws of a run different rectangles of the tile.)
     return st.blend == BlendMode::Opaque && st.depth_test && st.depth_write && st.color_write &&
-           st.depth_func != DepthFunc::Never;
+           st.depth_func != DepthFunc::Never && !st.scissor_test;
 }
 
 // A run is worth two passes when its triangles' bounds cover the tile this many times over.
@@ -69,7 +70,7 @@ void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& sta
                      const Rect& rect, uint32_t draw, uint32_t* owners) {
     const DepthTest depth(state);
     const int width = fb.width();
-    for_each_triangle_setup<Samples>(triangles, state.front_face, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
+    for_each_triangle_setup<Samples>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
         const uint32_t me = owner_id(draw, id);
         if constexpr (Samples == 1) {  // eight pixels at a time
             using namespace simd;
@@ -104,7 +105,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
     using V = typename S::Varyings;
     const int width = fb.width();
     uint64_t shaded = 0;
-    for_each_triangle_setup<Samples>(triangles, state.front_face, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
+    for_each_triangle_setup<Samples>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
         const uint32_t me = owner_id(draw, id);
         if constexpr (Samples == 1 && BatchShader<S>) {  // eight pixels at a time
             using namespace simd;

@@ -9,6 +9,8 @@
 // (Float arithmetic quantized once differs by one level here and there; over many layers
 // those differences add up against the reference.)
 #pragma once
+#include <algorithm>
+
 #include <glm/common.hpp>
 #include <glm/vec4.hpp>
 
@@ -33,7 +35,8 @@ inline Rgba8 blend(BlendMode mode, const glm::vec4& src, Rgba8 dst) {
     auto sat = [](unsigned v) { return uint8_t(v > 255 ? 255 : v); };
     const unsigned a = s.a, inv_a = 255u - s.a;
     switch (mode) {
-        case BlendMode::Opaque: break;
+        case BlendMode::Opaque:
+        case BlendMode::Custom: break;  // (Custom draws blend in the general back end)
         case BlendMode::Alpha:
             return {sat(mul_unorm8(s.r, a) + mul_unorm8(dst.r, inv_a)), sat(mul_unorm8(s.g, a) + mul_unorm8(dst.g, inv_a)),
                     sat(mul_unorm8(s.b, a) + mul_unorm8(dst.b, inv_a)), sat(a + mul_unorm8(dst.a, inv_a))};
@@ -41,6 +44,85 @@ inline Rgba8 blend(BlendMode mode, const glm::vec4& src, Rgba8 dst) {
             return {sat(mul_unorm8(s.r, a) + dst.r), sat(mul_unorm8(s.g, a) + dst.g), sat(mul_unorm8(s.b, a) + dst.b), dst.a};
     }
     return s;
+}
+
+// ---- every GL blend equation and factor (the general back end, general_back_end.h)
+//
+// The same fixed-point arithmetic, per channel c of source s (quantized), destination d and
+// constant k (quantized), all in 0..255: the factors are 0, 255, s_c, d_c, k_c, s_a, d_a, k_a
+// or 255 minus one of them, and SRC_ALPHA_SATURATE min(s_a, 255 - d_a) (255 for alpha);
+//   add: min(255, s*S + d*D)   subtract: max(0, s*S - d*D)   reverse subtract: max(0, d*D - s*S)
+//   min: min(s, d)             max: max(s, d)   (no factors)
+// with each product x*y the rounded mul_unorm8. The presets are instances of it.
+
+// The draw's blend settings, ready for the per-fragment arithmetic.
+struct BlendSettings {
+    BlendEquationState eq;
+    Rgba8 constant;
+    uint8_t color_mask = 0xf;  // bits r, g, b, a
+    explicit BlendSettings(const RenderState& st)
+        : eq(st.blend == BlendMode::Custom ? st.blend_equation : blend_preset(st.blend)),
+          constant(quantize_rgba8(eq.constant)),
+          color_mask(st.color_write ? st.color_mask : 0) {}
+};
+
+inline unsigned blend_factor(BlendFactor f, const std::array<unsigned, 4>& s, const std::array<unsigned, 4>& d,
+                             const std::array<unsigned, 4>& k, size_t c) {
+    switch (f) {
+        case BlendFactor::Zero: return 0;
+        case BlendFactor::One: return 255;
+        case BlendFactor::SrcColor: return s[c];
+        case BlendFactor::OneMinusSrcColor: return 255 - s[c];
+        case BlendFactor::DstColor: return d[c];
+        case BlendFactor::OneMinusDstColor: return 255 - d[c];
+        case BlendFactor::SrcAlpha: return s[3];
+        case BlendFactor::OneMinusSrcAlpha: return 255 - s[3];
+        case BlendFactor::DstAlpha: return d[3];
+        case BlendFactor::OneMinusDstAlpha: return 255 - d[3];
+        case BlendFactor::ConstantColor: return k[c];
+        case BlendFactor::OneMinusConstantColor: return 255 - k[c];
+        case BlendFactor::ConstantAlpha: return k[3];
+        case BlendFactor::OneMinusConstantAlpha: return 255 - k[3];
+        case BlendFactor::SrcAlphaSaturate: return c == 3 ? 255 : std::min(s[3], 255 - d[3]);
+    }
+    return 0;
+}
+
+inline unsigned blend_channel(BlendEquation e, unsigned s, unsigned sf, unsigned d, unsigned df) {
+    switch (e) {
+        case BlendEquation::Add: return std::min(255u, mul_unorm8(s, sf) + mul_unorm8(d, df));
+        case BlendEquation::Subtract: {
+            const unsigned a = mul_unorm8(s, sf), b = mul_unorm8(d, df);
+            return a > b ? a - b : 0;
+        }
+        case BlendEquation::ReverseSubtract: {
+            const unsigned a = mul_unorm8(s, sf), b = mul_unorm8(d, df);
+            return b > a ? b - a : 0;
+        }
+        case BlendEquation::Min: return std::min(s, d);
+        case BlendEquation::Max: return std::max(s, d);
+    }
+    return s;
+}
+
+// The blended color of a fragment over dst, with the draw's color mask applied.
+inline Rgba8 blend(const BlendSettings& b, const glm::vec4& src, Rgba8 dst) {
+    const Rgba8 q = quantize_rgba8(src);
+    const std::array<unsigned, 4> s{q.r, q.g, q.b, q.a}, d{dst.r, dst.g, dst.b, dst.a},
+        k{b.constant.r, b.constant.g, b.constant.b, b.constant.a};
+    std::array<uint8_t, 4> out;
+    for (size_t c = 0; c < 4; ++c) {
+        if (!(b.color_mask & (1u << c))) {
+            out[c] = uint8_t(d[c]);
+            continue;
+        }
+        const bool alpha = c == 3;
+        const BlendEquation e = alpha ? b.eq.alpha : b.eq.rgb;
+        const unsigned sf = blend_factor(alpha ? b.eq.src_alpha : b.eq.src_rgb, s, d, k, c);
+        const unsigned df = blend_factor(alpha ? b.eq.dst_alpha : b.eq.dst_rgb, s, d, k, c);
+        out[c] = uint8_t(blend_channel(e, s[c], sf, d[c], df));
+    }
+    return {out[0], out[1], out[2], out[3]};
 }
 
 // Writes one shaded fragment's color to the samples in `mask` of a pixel. Blended: the

@@ -1,5 +1,6 @@
-// Where a pixel is sampled: at its center, or with 4x MSAA at the four positions of the
-// spec's rotated-grid pattern. Rasterization tests these points; binning and triangle setup
+// Where a pixel is sampled: at its center, or with MSAA at the Direct3D standard sample
+// positions for 2, 4, 8 and 16 samples (4 is the spec's rotated grid; OpenGL leaves the
+// positions to the implementation, llvmpipe uses the same 4). Rasterization tests these points; binning and triangle setup
 // use their extent to bound the pixels a triangle can cover (pixel_bounds).
 #pragma once
 #include <algorithm>
@@ -17,9 +18,24 @@ template <>
 struct SamplePattern<1> {
     static constexpr std::array<int, 1> x = {128}, y = {128};
 };
+// Direct3D gives the positions in 1/16 pixel from the center (x right, y down): here
+// 128 + 16 * offset.
+template <>
+struct SamplePattern<2> {  // (4, 4), (-4, -4)
+    static constexpr std::array<int, 2> x = {192, 64}, y = {192, 64};
+};
 template <>
 struct SamplePattern<4> {  // (0.375, 0.125), (0.875, 0.375), (0.125, 0.625), (0.625, 0.875)
     static constexpr std::array<int, 4> x = {96, 224, 32, 160}, y = {32, 96, 160, 224};
+};
+template <>
+struct SamplePattern<8> {  // (1,-3) (-1,3) (5,1) (-3,-5) (-5,5) (-7,-1) (3,7) (7,-7)
+    static constexpr std::array<int, 8> x = {144, 112, 208, 80, 48, 16, 176, 240}, y = {80, 176, 144, 48, 208, 112, 240, 16};
+};
+template <>
+struct SamplePattern<16> {  // (1,1) (-1,-3) (-3,2) (4,-1) (-5,-2) (2,5) (5,3) (3,-5) (-2,6) (0,-7) (-4,-6) (-6,4) (-8,0) (7,-4) (6,7) (-7,-8)
+    static constexpr std::array<int, 16> x = {144, 112, 80, 192, 48, 160, 208, 176, 96, 128, 64, 32, 0, 240, 224, 16},
+                                         y = {144, 80, 160, 112, 96, 208, 176, 48, 224, 16, 32, 192, 128, 64, 240, 0};
 };
 
 // The smallest box, in 1/256 pixel from a pixel's top-left corner, holding all its samples.

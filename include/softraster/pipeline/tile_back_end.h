@@ -38,8 +38,10 @@ struct BinnedTriangles {
 // triangle by it). Without Planes, the setup has its coverage only (f makes the planes
 // when it needs them).
 template <int Samples, bool Planes = true, int N, class F>
-void for_each_triangle_setup(const BinnedTriangles<N>& draw, FrontFace front, int tx, int ty, const Rect& rect, F&& f) {
+void for_each_triangle_setup(const BinnedTriangles<N>& draw, const RenderState& state, int tx, int ty, const Rect& rect, F&& f) {
     TriangleSetup<N> setup;
+    setup.options = PlaneOptions::of(state);
+    const FrontFace front = state.front_face;
     uint32_t ordinal = 0;
     // Setup reads the window position and varyings of three vertices anywhere in the
     // draw's vertex buffer: fetch those of a triangle a few places ahead into the cache
@@ -114,7 +116,7 @@ struct TileBackEnd {
                 // sit among the tile loop's spilled registers.
                 static thread_local FragmentQueue<S, Samples> queue;
                 queue.start(shader, fb);
-                for_each_triangle_setup<Samples, /*Planes=*/false>(triangles, state.front_face, tx, ty, rect,
+                for_each_triangle_setup<Samples, /*Planes=*/false>(triangles, state, tx, ty, rect,
                                                                    [&](TriangleSetup<N>& setup, uint32_t) {
                     if (Samples == 1 && is_large(setup.bounds)) {
                         queue.flush();
@@ -128,7 +130,7 @@ struct TileBackEnd {
                 return shaded;
             }
         }
-        for_each_triangle_setup<Samples>(triangles, state.front_face, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+        for_each_triangle_setup<Samples>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
             if constexpr (Samples == 1 && BatchShader<S>) {
                 if (WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {  // EightPixelGroups
                     shaded += draw_groups(setup);

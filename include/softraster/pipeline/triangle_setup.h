@@ -55,6 +55,15 @@ struct DepthPlane {
     T at(T i, T j) const { return hi + ((lo + dadx * i) + dady * j); }
 };
 
+// A draw's settings for its planes (RenderState): polygon offset, and noperspective
+// interpolation, for which the varyings' planes are of the varyings themselves and 1/w's plane
+// is 1, so that interpolation.h's division leaves them affine in window space.
+struct PlaneOptions {
+    float offset_factor = 0.0f, offset_units = 0.0f;
+    bool noperspective = false;
+    static PlaneOptions of(const RenderState& st) { return {st.polygon_offset_factor, st.polygon_offset_units, st.noperspective}; }
+};
+
 template <int N>
 struct TriangleSetup {
     std::array<int64_t, 3> A, B, C;  // E_i(p) = A_i p.x + B_i p.y + C_i, p in 24.8 fixed point
@@ -66,6 +75,7 @@ struct TriangleSetup {
     // Interpolation planes, made by setup_planes. A draw may make them only once the triangle
     // is known to cover a sample: in a million-triangle mesh many triangles cover none.
     bool has_planes = false;
+    PlaneOptions options;        // set per draw, before setup_coverage
     DepthPlane z;                // window depth
     Plane inv_w;                 // 1/w
     std::array<Plane, N> var_w;  // varying / w
@@ -127,12 +137,28 @@ void setup_planes(TriangleSetup<N>& t) {
         const auto [at_origin, dadx, dady] = plane_at_origin(a0, a1, a2);
         return Plane{float(at_origin), float(dadx), float(dady)};
     };
-    const auto [z0, dzdx, dzdy] = plane_at_origin(w0.z, w1.z, w2.z);
+    auto [z0, dzdx, dzdy] = plane_at_origin(w0.z, w1.z, w2.z);
+    if (t.options.offset_factor != 0.0f || t.options.offset_units != 0.0f) {
+        // glPolygonOffset for a float depth buffer: the slope m = max(|dz/dx|, |dz/dy|) and the
+        // minimum resolvable difference r = 2^(e - 23), e the exponent of the largest |z| of
+        // the corners (OpenGL 4.6, section 14.6.5; llvmpipe computes the same). Not clamped:
+        // a fragment pushed below 0 or past 1 keeps that depth.
+        const float zmax = std::max({std::fabs(w0.z), std::fabs(w1.z), std::fabs(w2.z)});
+        int e = 0;
+        std::frexp(zmax, &e);  // zmax = f * 2^e with f in [0.5, 1): its float exponent is e - 1
+        const double r = zmax > 0.0f ? std::ldexp(1.0, e - 1 - 23) : 0.0;
+        z0 += double(t.options.offset_factor) * std::max(std::fabs(dzdx), std::fabs(dzdy)) + double(t.options.offset_units) * r;
+    }
     const float z_hi = float(z0);
     t.z = DepthPlane{z_hi, float(z0 - double(z_hi)), float(dzdx), float(dzdy)};
-    t.inv_w = plane(w0.inv_w, w1.inv_w, w2.inv_w);
-    for (size_t k = 0; k < size_t(N); ++k)
-        t.var_w[k] = plane(double(v0.clip.var[k]) * w0.inv_w, double(v1.clip.var[k]) * w1.inv_w, double(v2.clip.var[k]) * w2.inv_w);
+    if (t.options.noperspective) {
+        t.inv_w = Plane{1.0f, 0.0f, 0.0f};
+        for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = plane(v0.clip.var[k], v1.clip.var[k], v2.clip.var[k]);
+    } else {
+        t.inv_w = plane(w0.inv_w, w1.inv_w, w2.inv_w);
+        for (size_t k = 0; k < size_t(N); ++k)
+            t.var_w[k] = plane(double(v0.clip.var[k]) * w0.inv_w, double(v1.clip.var[k]) * w1.inv_w, double(v2.clip.var[k]) * w2.inv_w);
+    }
     t.has_planes = true;
 }
 
