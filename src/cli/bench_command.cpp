@@ -29,7 +29,7 @@ Run add_bench_command(CLI::App& app) {
         const Scene scene = load_scene(opt->scene);
         const unsigned threads = thread_count(opt->threads);
         const SceneRenderer renderer(scene, threads);
-        Framebuffer fb(scene.width, scene.height, scene.samples);
+        Framebuffer fb = renderer.make_framebuffer();
         std::vector<double> ms;
         RenderStats stats;
         Image picture(scene.width, scene.height);
@@ -39,6 +39,7 @@ Run add_bench_command(CLI::App& app) {
             // With MSAA the resolve is part of every frame (llvmpipe's timing blits to a
             // resolve buffer too); single-sampled, the framebuffer already is the picture.
             if (fb.samples() > 1) resolve(fb, picture);
+            if (scene.supersample > 1) picture = downsample_box(fb.samples() > 1 ? picture : fb.read_pixels(), scene.supersample);
             const double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             if (i >= opt->warmup) ms.push_back(dt);
         }

@@ -40,6 +40,24 @@ void resolve(const Framebuffer& fb, Image& img) {
     }
 }
 
+Image downsample_box(const Image& in, int k) {
+    if (k == 1) return in;
+    Image out(in.width / k, in.height / k);
+    const auto n = unsigned(k * k);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            unsigned sum[4] = {n / 2, n / 2, n / 2, n / 2};
+            for (int j = 0; j < k; ++j)
+                for (int i = 0; i < k; ++i) {
+                    const Rgba8 c = in.pixels[size_t(y * k + j) * size_t(in.width) + size_t(x * k + i)];
+                    sum[0] += c.r, sum[1] += c.g, sum[2] += c.b, sum[3] += c.a;
+                }
+            out.pixels[size_t(y) * size_t(out.width) + size_t(x)] = {uint8_t(sum[0] / n), uint8_t(sum[1] / n), uint8_t(sum[2] / n),
+                                                                    uint8_t(sum[3] / n)};
+        }
+    return out;
+}
+
 Image Framebuffer::read_pixels() const {
     Image img;
     resolve(*this, img);

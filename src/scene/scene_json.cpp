@@ -1,4 +1,5 @@
-// Scene format version 1: JSON -> Scene, with every rule of the spec checked.
+// The scene format (docs/scene-format.md), versions 1 and 2: JSON -> Scene, with every rule
+// checked. A version 1 file may not use a key version 2 added.
 // Errors name the file and the JSON path: "scene.json: objects[2].material.shininess: ...".
 #include <cmath>
 #include <map>
@@ -29,13 +30,19 @@ public:
     }
     const json& raw() const { return j_; }
 
-    // An object whose keys are all in `allowed`.
-    void expect_object(std::initializer_list<const char*> allowed) const {
+    // An object whose keys are all in `allowed`, or in `added_in_v2` when the file is version 2.
+    void expect_object(std::initializer_list<const char*> allowed, std::initializer_list<const char*> added_in_v2 = {},
+                       int version = 1) const {
         if (!j_.is_object()) fail("expected an object, got " + type_name());
+        auto in = [](const std::string& key, std::initializer_list<const char*> list) {
+            for (const char* a : list)
+                if (key == a) return true;
+            return false;
+        };
         for (const auto& [key, value] : j_.items()) {
-            bool ok = false;
-            for (const char* a : allowed) ok = ok || key == a;
-            if (!ok) Node(value, child_path(key), file_).fail("unknown key");
+            if (in(key, allowed)) continue;
+            if (!in(key, added_in_v2)) Node(value, child_path(key), file_).fail("unknown key");
+            if (version < 2) Node(value, child_path(key), file_).fail("a version 2 key in a version 1 file (set \"version\": 2)");
         }
     }
     bool has(const char* key) const { return j_.contains(key); }
@@ -67,6 +74,10 @@ public:
         if (!std::isfinite(d) || d != std::floor(d)) fail("expected an integer, got " + j_.dump());
         if (d < lo || d > hi) fail("value " + j_.dump() + " out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
         return int(d);
+    }
+    bool boolean() const {
+        if (!j_.is_boolean()) fail("expected true or false, got " + type_name());
+        return j_.get<bool>();
     }
     std::string string() const {
         if (!j_.is_string()) fail("expected a string, got " + type_name());
@@ -113,21 +124,92 @@ glm::vec3 nonzero_vec3(const Node& n) {
     return v;
 }
 
+CompareFunc compare_func(const Node& n) {
+    using F = CompareFunc;
+    return n.choice<F>({{"never", F::Never}, {"less", F::Less}, {"equal", F::Equal}, {"less_equal", F::LessEqual},
+                        {"greater", F::Greater}, {"not_equal", F::NotEqual}, {"greater_equal", F::GreaterEqual},
+                        {"always", F::Always}});
+}
+
+BlendFactor blend_factor(const Node& n) {
+    using F = BlendFactor;
+    return n.choice<F>({{"zero", F::Zero}, {"one", F::One}, {"src_color", F::SrcColor},
+                        {"one_minus_src_color", F::OneMinusSrcColor}, {"dst_color", F::DstColor},
+                        {"one_minus_dst_color", F::OneMinusDstColor}, {"src_alpha", F::SrcAlpha},
+                        {"one_minus_src_alpha", F::OneMinusSrcAlpha}, {"dst_alpha", F::DstAlpha},
+                        {"one_minus_dst_alpha", F::OneMinusDstAlpha}, {"constant_color", F::ConstantColor},
+                        {"one_minus_constant_color", F::OneMinusConstantColor}, {"constant_alpha", F::ConstantAlpha},
+                        {"one_minus_constant_alpha", F::OneMinusConstantAlpha}, {"src_alpha_saturate", F::SrcAlphaSaturate}});
+}
+
+BlendEquation blend_equation(const Node& n) {
+    using E = BlendEquation;
+    return n.choice<E>({{"add", E::Add}, {"subtract", E::Subtract}, {"reverse_subtract", E::ReverseSubtract},
+                        {"min", E::Min}, {"max", E::Max}});
+}
+
+StencilOp stencil_op(const Node& n) {
+    using O = StencilOp;
+    return n.choice<O>({{"keep", O::Keep}, {"zero", O::Zero}, {"replace", O::Replace}, {"incr", O::Incr},
+                        {"incr_wrap", O::IncrWrap}, {"decr", O::Decr}, {"decr_wrap", O::DecrWrap}, {"invert", O::Invert}});
+}
+
+// glBlendEquationSeparate + glBlendFuncSeparate + glBlendColor as an object; the alpha
+// settings default to the color ones.
+BlendEquationState read_blend_equation(const Node& n) {
+    n.expect_object({"equation", "equation_alpha", "src", "dst", "src_alpha", "dst_alpha", "constant"});
+    BlendEquationState b;
+    if (n.has("equation")) b.rgb = blend_equation(n["equation"]);
+    b.alpha = n.has("equation_alpha") ? blend_equation(n["equation_alpha"]) : b.rgb;
+    if (n.has("src")) b.src_rgb = blend_factor(n["src"]);
+    if (n.has("dst")) b.dst_rgb = blend_factor(n["dst"]);
+    b.src_alpha = n.has("src_alpha") ? blend_factor(n["src_alpha"]) : b.src_rgb;
+    b.dst_alpha = n.has("dst_alpha") ? blend_factor(n["dst_alpha"]) : b.dst_rgb;
+    if (n.has("constant")) {
+        b.constant = n["constant"].vec4();
+        for (int c = 0; c < 4; ++c)
+            if (b.constant[c] < 0.0f || b.constant[c] > 1.0f) n["constant"].fail("components must be in [0, 1]");
+    }
+    return b;
+}
+
+void read_stencil_face(const Node& n, StencilFace& f) {
+    n.expect_object({"func", "ref", "read_mask", "write_mask", "fail", "depth_fail", "pass"});
+    if (n.has("func")) f.func = compare_func(n["func"]);
+    if (n.has("ref")) f.ref = uint8_t(n["ref"].integer_in(0, 255));
+    if (n.has("read_mask")) f.read_mask = uint8_t(n["read_mask"].integer_in(0, 255));
+    if (n.has("write_mask")) f.write_mask = uint8_t(n["write_mask"].integer_in(0, 255));
+    if (n.has("fail")) f.fail = stencil_op(n["fail"]);
+    if (n.has("depth_fail")) f.depth_fail = stencil_op(n["depth_fail"]);
+    if (n.has("pass")) f.pass = stencil_op(n["pass"]);
+}
+
 struct Loader {
     std::filesystem::path dir;
     std::string file;
+    int version = 1;
+    int samples = 1;
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;  // one load per distinct file
     std::map<std::string, std::shared_ptr<const Texture>> textures;
 
     void read_image(const Node& n, Scene& s) {
-        n.expect_object({"width", "height", "background", "samples"});
+        n.expect_object({"width", "height", "background", "samples"}, {"supersample", "clear_stencil"}, version);
         s.width = n["width"].integer_in(1, 16384);
         s.height = n["height"].integer_in(1, 16384);
         if (n.has("background")) s.background = n["background"].vec4();
         if (n.has("samples")) {
-            s.samples = n["samples"].integer_in(1, 4);
-            if (s.samples != 1 && s.samples != 4) n["samples"].fail("must be 1 or 4");
+            s.samples = n["samples"].integer_in(1, 16);
+            if (version < 2 && s.samples != 1 && s.samples != 4) n["samples"].fail("must be 1 or 4 (2, 8 and 16 need version 2)");
+            if (s.samples != 1 && s.samples != 2 && s.samples != 4 && s.samples != 8 && s.samples != 16)
+                n["samples"].fail("must be 1, 2, 4, 8 or 16");
         }
+        samples = s.samples;
+        if (n.has("supersample")) {
+            s.supersample = n["supersample"].integer_in(1, 4);
+            if (int64_t(s.width) * s.supersample > 16384 || int64_t(s.height) * s.supersample > 16384)
+                n["supersample"].fail("the supersampled picture would exceed 16384 pixels in a direction");
+        }
+        if (n.has("clear_stencil")) s.clear_stencil = uint8_t(n["clear_stencil"].integer_in(0, 255));
     }
 
     void read_camera(const Node& n, Camera& c) {
@@ -213,7 +295,8 @@ struct Loader {
     }
 
     void read_material(const Node& n, Material& m) {
-        n.expect_object({"shading", "color", "texture", "filter", "wrap", "specular", "shininess", "blend"});
+        n.expect_object({"shading", "color", "texture", "filter", "wrap", "specular", "shininess", "blend"},
+                        {"color_mask", "alpha_cutoff", "alpha_to_coverage", "interpolation"}, version);
         if (n.has("shading"))
             m.shading = n["shading"].choice<Shading>({{"unlit", Shading::Unlit}, {"flat", Shading::Flat},
                                                       {"gouraud", Shading::Gouraud}, {"lambert", Shading::Lambert},
@@ -224,14 +307,59 @@ struct Loader {
         if (n.has("wrap")) m.wrap = n["wrap"].choice<Wrap>({{"repeat", Wrap::Repeat}, {"clamp", Wrap::Clamp}});
         if (n.has("specular")) m.specular = n["specular"].vec3();
         if (n.has("shininess")) m.shininess = float(n["shininess"].number_in(0, HUGE_VAL, false, false, ">= 0"));
-        if (n.has("blend"))
-            m.blend = n["blend"].choice<BlendMode>({{"opaque", BlendMode::Opaque}, {"alpha", BlendMode::Alpha},
-                                                    {"additive", BlendMode::Additive}});
+        if (n.has("blend")) {
+            const Node b = n["blend"];
+            if (b.raw().is_object() && version >= 2) {
+                m.blend = BlendMode::Custom;
+                m.blend_equation = read_blend_equation(b);
+            } else {
+                if (b.raw().is_object()) b.fail("a blend object needs version 2 (version 1 takes opaque, alpha or additive)");
+                m.blend = b.choice<BlendMode>({{"opaque", BlendMode::Opaque}, {"alpha", BlendMode::Alpha}, {"additive", BlendMode::Additive}});
+            }
+        }
+        if (n.has("color_mask")) {
+            const Node c = n["color_mask"];
+            if (c.array_size() != 4) c.fail("expected an array of 4 booleans (r, g, b, a)");
+            m.color_mask = 0;
+            for (size_t i = 0; i < 4; ++i) m.color_mask |= uint8_t(c.at(i).boolean() ? 1u << i : 0u);
+        }
+        if (n.has("alpha_cutoff")) m.alpha_cutoff = float(n["alpha_cutoff"].number_in(0, 1, false, false, "0..1"));
+        if (n.has("alpha_to_coverage")) {
+            m.alpha_to_coverage = n["alpha_to_coverage"].boolean();
+            if (m.alpha_to_coverage && samples == 1) n["alpha_to_coverage"].fail("needs image.samples > 1");
+        }
+        if (n.has("interpolation"))
+            m.affine = n["interpolation"].choice<bool>({{"perspective", false}, {"affine", true}});
         if (n.has("texture")) m.texture = read_texture(n["texture"]);
     }
 
+    void read_depth(const Node& n, ObjectState& st) {
+        n.expect_object({"test", "func", "write", "offset"});
+        if (n.has("test")) st.depth_test = n["test"].boolean();
+        if (n.has("func")) st.depth_func = compare_func(n["func"]);
+        if (n.has("write")) st.depth_write = n["write"].boolean();
+        if (n.has("offset")) {
+            const auto o = n["offset"].numbers<2>();
+            st.offset_factor = float(o[0]);
+            st.offset_units = float(o[1]);
+        }
+    }
+
+    // Either one face state for both faces, or "front" and "back".
+    void read_stencil(const Node& n, ObjectState& st) {
+        st.stencil_test = true;
+        if (n.raw().is_object() && (n.has("front") || n.has("back"))) {
+            n.expect_object({"front", "back"});
+            if (n.has("front")) read_stencil_face(n["front"], st.stencil_front);
+            if (n.has("back")) read_stencil_face(n["back"], st.stencil_back);
+            return;
+        }
+        read_stencil_face(n, st.stencil_front);
+        st.stencil_back = st.stencil_front;
+    }
+
     SceneObject read_object(const Node& n) {
-        n.expect_object({"mesh", "builtin", "transform", "material", "cull", "front_face"});
+        n.expect_object({"mesh", "builtin", "transform", "material", "cull", "front_face"}, {"depth", "stencil", "scissor"}, version);
         SceneObject o;
         if (n.has("mesh") == n.has("builtin")) n.fail("exactly one of 'mesh' and 'builtin' is required");
         glm::vec3 translate(0.0f), rotate(0.0f), scale(1.0f);
@@ -251,6 +379,14 @@ struct Loader {
             o.cull = n["cull"].choice<CullMode>({{"back", CullMode::Back}, {"front", CullMode::Front}, {"none", CullMode::None}});
         if (n.has("front_face")) o.front_face = n["front_face"].choice<FrontFace>({{"ccw", FrontFace::CCW}, {"cw", FrontFace::CW}});
         if (n.has("material")) read_material(n["material"], o.material);
+        if (n.has("depth")) read_depth(n["depth"], o.state);
+        if (n.has("stencil")) read_stencil(n["stencil"], o.state);
+        if (n.has("scissor")) {
+            const Node r = n["scissor"];
+            if (r.array_size() != 4) r.fail("expected [x, y, width, height]");
+            o.state.scissor = ScissorRect{r.at(0).integer_in(0, 16384), r.at(1).integer_in(0, 16384), r.at(2).integer_in(0, 16384),
+                                          r.at(3).integer_in(0, 16384)};
+        }
         if (n.has("builtin")) {
             o.mesh = read_builtin(n["builtin"]);
         } else {
@@ -275,11 +411,15 @@ Scene load_scene(const std::filesystem::path& path) {
         if (const size_t p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
         throw InputError(file + ": malformed JSON: " + what);
     }
-    Loader loader{path.parent_path(), file, {}, {}};
+    Loader loader;
+    loader.dir = path.parent_path();
+    loader.file = file;
     Scene scene;
     const Node top(root, "", file);
-    top.expect_object({"version", "image", "camera", "lights", "objects"});
-    if (top["version"].integer_in(1, 1) != 1) top["version"].fail("must be 1");
+    if (!root.is_object()) top.fail("expected an object");
+    loader.version = top["version"].integer_in(1, 2);
+    top.expect_object({"version", "image", "camera", "lights", "objects"}, {"draw_order"}, loader.version);
+    if (top.has("draw_order")) scene.sorted = top["draw_order"].choice<bool>({{"sorted", true}, {"file", false}});
     loader.read_image(top["image"], scene);
     loader.read_camera(top["camera"], scene.camera);
     if (top.has("lights")) loader.read_lights(top["lights"], scene.lights);

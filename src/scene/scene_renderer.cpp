@@ -9,6 +9,7 @@
 
 #include "scene/record_surface_draw.h"
 #include "softraster/context.h"
+#include "softraster/pipeline/resolve.h"
 #include "softraster/worker_pool.h"
 
 namespace softraster {
@@ -66,6 +67,36 @@ LightSet light_set(const Lights& lights) {
     return set;
 }
 
+// The pipeline state of an object (version 2 keys; defaults for version 1). Pixel
+// rectangles (the scissor) scale with supersampling.
+RenderState render_state(const SceneObject& o, int supersample) {
+    RenderState st;
+    st.cull = o.cull;
+    st.front_face = o.front_face;
+    st.depth_test = o.state.depth_test;
+    st.depth_func = o.state.depth_func;
+    st.polygon_offset_factor = o.state.offset_factor;
+    st.polygon_offset_units = o.state.offset_units;
+    st.stencil_test = o.state.stencil_test;
+    st.stencil_front = o.state.stencil_front;
+    st.stencil_back = o.state.stencil_back;
+    if (o.state.scissor) {
+        const ScissorRect& r = *o.state.scissor;
+        st.scissor_test = true;
+        st.scissor = {r.x * supersample, r.y * supersample, r.width * supersample, r.height * supersample};
+    }
+    const Material& m = o.material;
+    st.blend = m.blend;
+    st.blend_equation = m.blend_equation;
+    st.color_write = m.color_mask != 0;
+    st.color_mask = m.color_mask;
+    st.alpha_test = m.alpha_cutoff.has_value();
+    st.alpha_cutoff = m.alpha_cutoff.value_or(0.5f);
+    st.alpha_to_coverage = m.alpha_to_coverage;
+    st.noperspective = m.affine;
+    return st;
+}
+
 bool has_vertex_colors(const Mesh& mesh) {
     return std::any_of(mesh.vertices.begin(), mesh.vertices.end(), [](const MeshVertex& v) { return v.color != glm::vec4(1.0f); });
 }
@@ -94,6 +125,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     struct Keyed {
         Draw draw;
         float depth;
+        size_t index;  // in the file
     };
     std::vector<Keyed> opaque, blended;
     for (const SceneObject& o : scene.objects) {
@@ -116,16 +148,19 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
             d.mesh = d.flat_mesh.get();
             u.normal_matrix = glm::mat3(1.0f);
         }
-        d.state.cull = o.cull;
-        d.state.front_face = o.front_face;
-        d.state.blend = o.material.blend;
-        d.state.depth_write = o.material.blend == BlendMode::Opaque;  // blended objects test but do not write
         const bool is_blended = o.material.blend != BlendMode::Opaque;
+        d.state = render_state(o, scene.supersample);
+        d.state.depth_write = o.state.depth_write.value_or(!is_blended);  // blended objects test but do not write
         const float depth = is_blended ? view_depth_of_bounds_center(*o.mesh, view * o.model) : 0.0f;
-        (is_blended ? blended : opaque).push_back({std::move(d), depth});
+        (is_blended ? blended : opaque).push_back({std::move(d), depth, size_t(&o - scene.objects.data())});
     }
     // Opaque first in file order; then blended, farthest (most negative view z) first,
-    // ties in file order.
+    // ties in file order. Or all in file order (version 2, draw_order "file").
+    if (!scene.sorted) {
+        for (Keyed& k : blended) opaque.push_back(std::move(k));
+        std::stable_sort(opaque.begin(), opaque.end(), [](const Keyed& a, const Keyed& b) { return a.index < b.index; });
+        blended.clear();
+    }
     std::stable_sort(blended.begin(), blended.end(), [](const Keyed& a, const Keyed& b) { return a.depth < b.depth; });
     for (auto* list : {&opaque, &blended})
         for (Keyed& k : *list) draws_.push_back(std::move(k.draw));
@@ -142,7 +177,7 @@ size_t SceneRenderer::triangle_count() const {
 RenderStats SceneRenderer::render(Framebuffer& fb) const {
     if (!ctx_) {
         ctx_ = std::make_unique<Context>(fb, pool_.get());
-        ctx_->clear(scene_.background, 1.0f);
+        ctx_->clear(scene_.background, 1.0f, scene_.clear_stencil);
         for (const Draw& d : draws_) draw_object(*ctx_, d);
     }
     ctx_->set_framebuffer(fb);
@@ -150,10 +185,18 @@ RenderStats SceneRenderer::render(Framebuffer& fb) const {
     return {ctx_->fragments_shaded()};
 }
 
+Framebuffer SceneRenderer::make_framebuffer() const {
+    return Framebuffer(scene_.width * scene_.supersample, scene_.height * scene_.supersample, scene_.samples);
+}
+
+Image SceneRenderer::resolve(const Framebuffer& fb) const {
+    return downsample_box(fb.read_pixels(), scene_.supersample);
+}
+
 Image SceneRenderer::render() const {
-    Framebuffer fb(scene_.width, scene_.height, scene_.samples);
+    Framebuffer fb = make_framebuffer();
     render(fb);
-    return fb.read_pixels();
+    return resolve(fb);
 }
 
 }  // namespace softraster

@@ -30,11 +30,11 @@ uniform mat3 u_normal_matrix;
 uniform vec3 u_ambient;
 uniform vec3 u_to_light[8];
 uniform vec3 u_light_color[8];
-out vec3 v_world;
-out vec3 v_normal;
-out vec2 v_uv;
-out vec4 v_color;
-out vec3 v_intensity;
+INTERP out vec3 v_world;
+INTERP out vec3 v_normal;
+INTERP out vec2 v_uv;
+INTERP out vec4 v_color;
+INTERP out vec3 v_intensity;
 void main() {
     v_world = (u_model * vec4(a_pos, 1.0)).xyz;
     v_normal = u_normal_matrix * a_normal;
@@ -53,11 +53,11 @@ void main() {
 )";
 
 const char* kFragmentShader = R"(
-in vec3 v_world;
-in vec3 v_normal;
-in vec2 v_uv;
-in vec4 v_color;
-in vec3 v_intensity;
+INTERP in vec3 v_world;
+INTERP in vec3 v_normal;
+INTERP in vec2 v_uv;
+INTERP in vec4 v_color;
+INTERP in vec3 v_intensity;
 // SHADING: 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth
 uniform sampler2D u_texture;
 uniform vec4 u_color;
@@ -67,6 +67,7 @@ uniform vec3 u_eye;
 uniform vec3 u_ambient;
 uniform vec3 u_to_light[8];
 uniform vec3 u_light_color[8];
+uniform float u_alpha_cutoff;
 out vec4 frag;
 void main() {
 #if SHADING == 6
@@ -102,6 +103,9 @@ void main() {
     }
     frag = vec4(base.rgb * intensity + spec, base.a);
 #endif
+#endif
+#if CUTOFF
+    if (frag.a < u_alpha_cutoff) discard;
 #endif
 }
 )";
@@ -141,9 +145,11 @@ softraster::Mesh flat_mesh(const softraster::Mesh& m, const glm::mat4& model) {
     return out;
 }
 
-GLuint link_program(int shading, bool textured, int lights) {
+GLuint link_program(int shading, bool textured, int lights, bool cutoff, bool affine) {
     const std::string defines = "#define SHADING " + std::to_string(shading) + "\n#define TEXTURED " +
-                                std::to_string(int(textured)) + "\n#define LIGHTS " + std::to_string(lights) + "\n";
+                                std::to_string(int(textured)) + "\n#define LIGHTS " + std::to_string(lights) +
+                                "\n#define CUTOFF " + std::to_string(int(cutoff)) + "\n#define INTERP " +
+                                (affine ? "noperspective" : "") + "\n";
     const GLuint program = glCreateProgram();
     glAttachShader(program, compile(GL_VERTEX_SHADER, defines, kVertexShader));
     glAttachShader(program, compile(GL_FRAGMENT_SHADER, defines, kFragmentShader));
@@ -152,6 +158,30 @@ GLuint link_program(int shading, bool textured, int lights) {
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) throw std::runtime_error("GLSL link error");
     return program;
+}
+
+void set_enabled(GLenum cap, bool on) {
+    if (on) glEnable(cap);
+    else glDisable(cap);
+}
+
+GLenum gl_compare(softraster::CompareFunc f) {
+    constexpr GLenum funcs[] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+    return funcs[int(f)];
+}
+GLenum gl_stencil_op(softraster::StencilOp op) {
+    constexpr GLenum ops[] = {GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_INCR_WRAP, GL_DECR, GL_DECR_WRAP, GL_INVERT};
+    return ops[int(op)];
+}
+GLenum gl_equation(softraster::BlendEquation e) {
+    constexpr GLenum eqs[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
+    return eqs[int(e)];
+}
+GLenum gl_factor(softraster::BlendFactor f) {
+    constexpr GLenum factors[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR, GL_ONE_MINUS_DST_COLOR,
+                                  GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA, GL_CONSTANT_COLOR,
+                                  GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_SRC_ALPHA_SATURATE};
+    return factors[int(f)];
 }
 
 }  // namespace
@@ -181,9 +211,12 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
     for (const softraster::SceneObject& o : scene.objects) {
         auto d = std::make_unique<Draw>();
         d->object = &o;
-        const int key = int(o.material.shading) * 2 + (o.material.texture ? 1 : 0);
+        const bool cutoff = o.material.alpha_cutoff.has_value();
+        const int key = ((int(o.material.shading) * 2 + (o.material.texture ? 1 : 0)) * 2 + int(cutoff)) * 2 + int(o.material.affine);
         GLuint& program = programs_[key];
-        if (!program) program = link_program(int(o.material.shading), o.material.texture != nullptr, int(scene.lights.directional.size()));
+        if (!program)
+            program = link_program(int(o.material.shading), o.material.texture != nullptr, int(scene.lights.directional.size()), cutoff,
+                                   o.material.affine);
         d->program = program;
         d->model = o.model;
         d->mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
@@ -251,7 +284,8 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
         draws_.push_back(std::move(d));
     }
     // Opaque first in file order, then blended farthest first (stable: ties keep file order).
-    std::stable_sort(draws_.begin(), draws_.end(), [](const auto& a, const auto& b) {
+    // (Version 2's draw_order "file": all in file order.)
+    if (scene.sorted) std::stable_sort(draws_.begin(), draws_.end(), [](const auto& a, const auto& b) {
         if (a->blended != b->blended) return !a->blended;
         return a->blended && a->view_depth < b->view_depth;
     });
@@ -267,8 +301,12 @@ void GlScene::draw_frame() const {
     const glm::vec4 bg = scene_.background;
     glClearColor(bg.r, bg.g, bg.b, bg.a);
     glClearDepth(1.0);
+    glClearStencil(scene_.clear_stencil);
     glDepthMask(GL_TRUE);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glStencilMask(0xff);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_SCISSOR_TEST);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glEnable(GL_MULTISAMPLE);
@@ -309,26 +347,43 @@ void GlScene::draw_frame() const {
             glCullFace(o.cull == softraster::CullMode::Back ? GL_BACK : GL_FRONT);
         }
         glFrontFace(o.front_face == softraster::FrontFace::CCW ? GL_CW : GL_CCW);
-        switch (m.blend) {
-            case softraster::BlendMode::Opaque:
-                glDisable(GL_BLEND);
-                glDepthMask(GL_TRUE);
-                break;
-            case softraster::BlendMode::Alpha:
-                glEnable(GL_BLEND);
-                glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-                glDepthMask(GL_FALSE);
-                break;
-            case softraster::BlendMode::Additive:
-                glEnable(GL_BLEND);
-                glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE, GL_ZERO, GL_ONE);
-                glDepthMask(GL_FALSE);
-                break;
+        glUniform1f(loc("u_alpha_cutoff"), m.alpha_cutoff.value_or(0.0f));
+        const softraster::ObjectState& st = o.state;
+        const bool blended = m.blend != softraster::BlendMode::Opaque;
+        set_enabled(GL_DEPTH_TEST, st.depth_test);
+        glDepthFunc(gl_compare(st.depth_func));
+        glDepthMask(st.depth_write.value_or(!blended) ? GL_TRUE : GL_FALSE);  // blended objects do not write by default
+        set_enabled(GL_POLYGON_OFFSET_FILL, st.offset_factor != 0.0f || st.offset_units != 0.0f);
+        glPolygonOffset(st.offset_factor, st.offset_units);
+        set_enabled(GL_STENCIL_TEST, st.stencil_test);
+        for (const auto& [face, f] : {std::pair{GLenum(GL_FRONT), st.stencil_front}, std::pair{GLenum(GL_BACK), st.stencil_back}}) {
+            glStencilFuncSeparate(face, gl_compare(f.func), f.ref, f.read_mask);
+            glStencilMaskSeparate(face, f.write_mask);
+            glStencilOpSeparate(face, gl_stencil_op(f.fail), gl_stencil_op(f.depth_fail), gl_stencil_op(f.pass));
         }
+        set_enabled(GL_SCISSOR_TEST, st.scissor.has_value());
+        if (st.scissor) {  // window row 0 is the top row of the picture (see the vertex shader)
+            const int k = scene_.supersample;
+            glScissor(st.scissor->x * k, st.scissor->y * k, st.scissor->width * k, st.scissor->height * k);
+        }
+        glColorMask(m.color_mask & 1, (m.color_mask >> 1) & 1, (m.color_mask >> 2) & 1, (m.color_mask >> 3) & 1);
+        set_enabled(GL_SAMPLE_ALPHA_TO_COVERAGE, m.alpha_to_coverage);
+        set_enabled(GL_BLEND, blended);
+        const softraster::BlendEquationState b =
+            m.blend == softraster::BlendMode::Custom ? m.blend_equation : softraster::blend_preset(m.blend);
+        glBlendEquationSeparate(gl_equation(b.rgb), gl_equation(b.alpha));
+        glBlendFuncSeparate(gl_factor(b.src_rgb), gl_factor(b.dst_rgb), gl_factor(b.src_alpha), gl_factor(b.dst_alpha));
+        glBlendColor(b.constant.r, b.constant.g, b.constant.b, b.constant.a);
         glBindVertexArray(d->vao);
         glDrawElements(GL_TRIANGLES, d->index_count, GL_UNSIGNED_INT, nullptr);
     }
     glDepthMask(GL_TRUE);
+    glStencilMask(0xff);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
 }
 
 }  // namespace glref

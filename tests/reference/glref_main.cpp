@@ -1,4 +1,4 @@
-// glref: renders a scene file (format version 1) with Mesa's llvmpipe through OSMesa, the
+// glref: renders a scene file (format versions 1 and 2) with Mesa's llvmpipe through OSMesa, the
 // test suite's independent reference. Test-only; see docs/conformance.md.
 //
 //   glref SCENE.json -o OUT.png
@@ -19,6 +19,24 @@
 #include "softraster/error.h"
 #include "softraster/io/image_io.h"
 
+// Each output channel: floor(mean + 0.5) of the k x k block's 8-bit values.
+softraster::Image box_filter(const softraster::Image& in, int k) {
+    softraster::Image out(in.width / k, in.height / k);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            int sum[4] = {0, 0, 0, 0};
+            for (int j = 0; j < k; ++j)
+                for (int i = 0; i < k; ++i) {
+                    const softraster::Rgba8 c = in.pixels[size_t((y * k + j) * in.width + x * k + i)];
+                    sum[0] += c.r, sum[1] += c.g, sum[2] += c.b, sum[3] += c.a;
+                }
+            const int n = k * k;
+            out.pixels[size_t(y * out.width + x)] = {uint8_t((sum[0] + n / 2) / n), uint8_t((sum[1] + n / 2) / n),
+                                                     uint8_t((sum[2] + n / 2) / n), uint8_t((sum[3] + n / 2) / n)};
+        }
+    return out;
+}
+
 int main(int argc, char** argv) {
     CLI::App app{"glref: render a scene with Mesa llvmpipe (OSMesa), the test reference"};
     std::string scene_path, out;
@@ -32,7 +50,9 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
     try {
         const softraster::Scene scene = softraster::load_scene(scene_path);
-        glref::OsmesaTarget target(scene.width, scene.height, scene.samples);
+        // Supersampling: drawn at k times the size, then box-filtered here (below).
+        const int k = scene.supersample;
+        glref::OsmesaTarget target(scene.width * k, scene.height * k, scene.samples);
         const glref::GlScene gl_scene(scene);
         if (!time_mode) {
             if (out.empty()) throw softraster::InputError("glref: -o OUT.png is required");
@@ -40,7 +60,7 @@ int main(int argc, char** argv) {
             gl_scene.draw_frame();
             target.resolve();
             glFinish();
-            softraster::write_png(target.read_pixels(), out);
+            softraster::write_png(box_filter(target.read_pixels(), k), out);
             return 0;
         }
         std::vector<double> ms;

@@ -36,8 +36,9 @@ OsmesaTarget::OsmesaTarget(int width, int height, int samples) : width_(width), 
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     color_ = make_renderbuffer(GL_RGBA8, samples, width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
-    depth_ = make_renderbuffer(GL_DEPTH_COMPONENT32F, samples, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    // 32-bit float depth and 8-bit stencil, as softraster's buffers.
+    depth_ = make_renderbuffer(GL_DEPTH32F_STENCIL8, samples, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_);
     check_complete("drawing target");
     if (samples > 1) {
         glGenFramebuffers(1, &resolve_fbo_);

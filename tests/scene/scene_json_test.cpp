@@ -79,7 +79,7 @@ TEST(SceneJson, ErrorsNameThePathAndTheProblem) {
         {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"builtin\": {\"type\": \"cube\"}, \"material\": {\"shading\": \"phong\"}}"), "objects[0].material.shading: unknown value 'phong'"},
         {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"builtin\": {\"type\": \"cube\"}, \"transform\": {\"scale\": [1, 0, 1]}}"), "objects[0].transform.scale: scale must not be zero"},
         {with("{\"builtin\": {\"type\": \"cube\"}}", "{}"), "objects[0]: exactly one of 'mesh' and 'builtin'"},
-        {with("\"version\": 1", "\"version\": 2"), "version: value 2 out of range"},
+        {with("\"version\": 1", "\"version\": 3"), "version: value 3 out of range"},
         {with("\"version\": 1,", ""), "version: required field is missing"},
         {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"mesh\": \"missing.obj\"}"), "missing.obj: file not found"},
         {"{\"version\": 1, \"image\": {", "malformed JSON"},

@@ -10,4 +10,8 @@ namespace softraster {
 // Framebuffer::read_pixels() is this into a new Image; reusing `out` saves allocating it.
 void resolve(const Framebuffer& fb, Image& out);
 
+// Supersampling's resolve: each pixel of the result is the box-filtered k x k block of `in`
+// (whose size is k times the result's), each channel floor(mean + 0.5) of the block's values.
+Image downsample_box(const Image& in, int k);
+
 }  // namespace softraster

@@ -1,8 +1,9 @@
-// A scene as scene format version 1 describes it (see docs and shared spec), already
+// A scene as the scene format describes it (docs/scene-format.md, versions 1 and 2), already
 // validated and with its meshes and textures loaded.
 #pragma once
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,23 @@ struct Material {
     glm::vec3 specular{0.0f};
     float shininess = 32.0f;
     BlendMode blend = BlendMode::Opaque;
+    // Version 2:
+    BlendEquationState blend_equation;  // when blend is Custom
+    uint8_t color_mask = 0xf;           // bits r, g, b, a
+    std::optional<float> alpha_cutoff;  // discard fragments whose alpha is below it
+    bool alpha_to_coverage = false;
+    bool affine = false;                // interpolation "affine": varyings linear in window space
+};
+
+// An object's per-fragment state (version 2; version 1 objects have the defaults).
+struct ObjectState {
+    bool depth_test = true;
+    DepthFunc depth_func = DepthFunc::Less;
+    std::optional<bool> depth_write;  // default: opaque objects write depth, blended ones do not
+    float offset_factor = 0.0f, offset_units = 0.0f;
+    bool stencil_test = false;
+    StencilFace stencil_front, stencil_back;
+    std::optional<ScissorRect> scissor;
 };
 
 struct DirectionalLight {
@@ -55,12 +73,16 @@ struct SceneObject {
     Material material;
     CullMode cull = CullMode::Back;
     FrontFace front_face = FrontFace::CCW;
+    ObjectState state;
 };
 
 struct Scene {
     int width = 640, height = 480;
     glm::vec4 background{0, 0, 0, 1};
     int samples = 1;
+    int supersample = 1;    // rendered at supersample x the size, then box-filtered
+    uint8_t clear_stencil = 0;
+    bool sorted = true;     // v1 draw order (opaque, then blended back to front); false: file order
     Camera camera;
     Lights lights;
     std::vector<SceneObject> objects;

@@ -35,7 +35,11 @@ public:
     // the first call and replayed after, so buffers are reused from frame to frame; fb must
     // have the scene's sample count. Not for use by two threads at once.
     RenderStats render(Framebuffer& fb) const;
-    // Allocates a framebuffer of the scene's size and samples, renders and resolves.
+    // A framebuffer for render(fb): the scene's size times its supersampling factor, and its samples.
+    Framebuffer make_framebuffer() const;
+    // The picture of a rendered framebuffer: the MSAA resolve, then the supersampling box filter.
+    Image resolve(const Framebuffer& fb) const;
+    // Allocates a framebuffer, renders and resolves.
     Image render() const;
 
     const Scene& scene() const { return scene_; }
