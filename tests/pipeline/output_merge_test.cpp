@@ -116,3 +116,48 @@ TEST(Blend, EightLanesEqualOneAtATime) {
             ASSERT_EQ(std::memcmp(row.data(), expected.data(), sizeof row), 0) << "mode " << int(mode) << " trial " << trial;
         }
 }
+
+// The general blend (every equation and factor) agrees with the presets it generalizes, and
+// its equations and special factors compute what GL specifies.
+TEST(Blend, GeneralEquationsMatchThePresets) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0, 1);
+    std::uniform_int_distribution<int> b(0, 255);
+    for (BlendMode mode : {BlendMode::Opaque, BlendMode::Alpha, BlendMode::Additive}) {
+        RenderState st;
+        st.blend = mode;
+        const BlendSettings general(st);
+        for (int i = 0; i < 2000; ++i) {
+            const glm::vec4 src(u(rng), u(rng), u(rng), u(rng));
+            const Rgba8 dst{uint8_t(b(rng)), uint8_t(b(rng)), uint8_t(b(rng)), uint8_t(b(rng))};
+            ASSERT_EQ(blend(general, src, dst), blend(mode, src, dst)) << int(mode);
+        }
+    }
+}
+
+TEST(Blend, EquationsFactorsAndMask) {
+    RenderState st;
+    st.blend = BlendMode::Custom;
+    auto run = [&](const glm::vec4& src, Rgba8 dst) { return blend(BlendSettings(st), src, dst); };
+    BlendEquationState& e = st.blend_equation;
+    e.src_rgb = e.dst_rgb = e.src_alpha = e.dst_alpha = BlendFactor::One;
+    const glm::vec4 s(0.4f, 0.8f, 0.2f, 0.6f);  // 102, 204, 51, 153
+    const Rgba8 d{200, 100, 51, 50};
+    e.rgb = e.alpha = BlendEquation::Subtract;
+    EXPECT_EQ(run(s, d), (Rgba8{0, 104, 0, 103}));
+    e.rgb = e.alpha = BlendEquation::ReverseSubtract;
+    EXPECT_EQ(run(s, d), (Rgba8{98, 0, 0, 0}));
+    e.rgb = e.alpha = BlendEquation::Min;
+    EXPECT_EQ(run(s, d), (Rgba8{102, 100, 51, 50}));
+    e.rgb = e.alpha = BlendEquation::Max;
+    EXPECT_EQ(run(s, d), (Rgba8{200, 204, 51, 153}));
+    e.rgb = e.alpha = BlendEquation::Add;
+    e.src_rgb = BlendFactor::SrcAlphaSaturate;  // min(153, 255 - 50) = 153 for rgb, 1 for alpha
+    e.dst_rgb = e.dst_alpha = BlendFactor::Zero;
+    EXPECT_EQ(run(s, d), (Rgba8{uint8_t(mul_unorm8(102, 153)), uint8_t(mul_unorm8(204, 153)), uint8_t(mul_unorm8(51, 153)), 153}));
+    e.src_rgb = BlendFactor::ConstantColor;
+    e.constant = glm::vec4(0.5f, 0.0f, 1.0f, 0.0f);  // 128, 0, 255
+    EXPECT_EQ(run(s, d), (Rgba8{uint8_t(mul_unorm8(102, 128)), 0, 51, 153}));
+    st.color_mask = 0b1010;  // green and alpha only
+    EXPECT_EQ(run(s, d), (Rgba8{200, 0, 51, 153}));
+}
