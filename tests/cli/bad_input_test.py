@@ -93,6 +93,50 @@ expect_bad('bad shading', scene_with('shade.json', object={"builtin": {"type": "
 expect_bad('negative shininess', scene_with('shin.json', object={"builtin": {"type": "cube"}, "material": {"shininess": -1}}), ['shininess'])
 expect_bad('bad flag', scene_with('flag.json'), ['--frobnicate'], args=['--frobnicate'])
 
+# --- version 2 keys: each bad value names its JSON path
+def v2(name, obj=None, **image):
+    s = json.loads(json.dumps(BASE))
+    s['version'] = 2
+    s['image'].update(image)
+    if obj is not None:
+        s['objects'] = [dict({"builtin": {"type": "cube"}}, **obj)]
+    return write(name, json.dumps(s))
+
+
+def v1_with(name, obj):
+    return write(name, json.dumps(dict(BASE, objects=[dict({"builtin": {"type": "cube"}}, **obj)])))
+
+
+expect_bad('v2 key in v1 (stencil)', v1_with('v1stencil.json', {"stencil": {"func": "always"}}), ['objects[0].stencil', 'version 2 key'])
+expect_bad('v2 key in v1 (supersample)', scene_with('v1ss.json', image__supersample=2), ['image.supersample', 'version 2'])
+expect_bad('v2 key in v1 (color_mask)', v1_with('v1mask.json', {"material": {"color_mask": [True] * 4}}), ['objects[0].material.color_mask', 'version 2'])
+expect_bad('v2 blend object in v1', v1_with('v1blend.json', {"material": {"blend": {"equation": "min"}}}), ['objects[0].material.blend', 'version 2'])
+expect_bad('v1 samples 8', scene_with('v1s8.json', image__samples=8), ['image.samples', 'version 2'])
+expect_bad('version 3', write('v3.json', json.dumps(dict(BASE, version=3))), ['version', 'out of range'])
+expect_bad('samples 6', v2('v2s6.json', samples=6), ['image.samples', 'must be 1, 2, 4, 8 or 16'])
+expect_bad('supersample 5', v2('v2ss5.json', supersample=5), ['image.supersample', 'out of range'])
+expect_bad('supersample too big', v2('v2ssbig.json', width=9000, supersample=2), ['image.supersample', 'exceed'])
+expect_bad('clear_stencil 256', v2('v2cs.json', clear_stencil=256), ['image.clear_stencil', 'out of range'])
+expect_bad('unknown draw_order', write('v2order.json', json.dumps(dict(BASE, version=2, draw_order="random"))), ['draw_order', "unknown value 'random'"])
+expect_bad('unknown stencil op', v2('v2op.json', {"stencil": {"pass": "increment"}}), ['objects[0].stencil.pass', "unknown value 'increment'"])
+expect_bad('unknown stencil func', v2('v2sf.json', {"stencil": {"front": {"func": "lequal"}}}), ['objects[0].stencil.front.func', 'unknown value'])
+expect_bad('stencil ref 300', v2('v2ref.json', {"stencil": {"ref": 300}}), ['objects[0].stencil.ref', 'out of range'])
+expect_bad('stencil mask not integer', v2('v2mask.json', {"stencil": {"write_mask": 1.5}}), ['objects[0].stencil.write_mask', 'integer'])
+expect_bad('unknown stencil key', v2('v2sk.json', {"stencil": {"front": {}, "side": {}}}), ['objects[0].stencil.side', 'unknown key'])
+expect_bad('depth test not bool', v2('v2dt.json', {"depth": {"test": 1}}), ['objects[0].depth.test', 'true or false'])
+expect_bad('unknown depth func', v2('v2df.json', {"depth": {"func": "lower"}}), ['objects[0].depth.func', 'unknown value'])
+expect_bad('depth offset one number', v2('v2do.json', {"depth": {"offset": 1}}), ['objects[0].depth.offset', '2 numbers'])
+expect_bad('scissor of 3', v2('v2sc.json', {"scissor": [0, 0, 4]}), ['objects[0].scissor', '[x, y, width, height]'])
+expect_bad('scissor negative', v2('v2scn.json', {"scissor": [-1, 0, 4, 4]}), ['objects[0].scissor[0]', 'out of range'])
+expect_bad('unknown blend factor', v2('v2bf.json', {"material": {"blend": {"src": "source_alpha"}}}), ['objects[0].material.blend.src', 'unknown value'])
+expect_bad('unknown blend equation', v2('v2be.json', {"material": {"blend": {"equation": "multiply"}}}), ['objects[0].material.blend.equation', 'unknown value'])
+expect_bad('blend constant out of range', v2('v2bc.json', {"material": {"blend": {"constant": [0, 0, 2, 1]}}}), ['objects[0].material.blend.constant', '[0, 1]'])
+expect_bad('color_mask of 3', v2('v2cm.json', {"material": {"color_mask": [True, True, True]}}), ['objects[0].material.color_mask', '4 booleans'])
+expect_bad('color_mask not bool', v2('v2cmb.json', {"material": {"color_mask": [1, 1, 1, 1]}}), ['objects[0].material.color_mask[0]', 'true or false'])
+expect_bad('alpha_cutoff 2', v2('v2ac.json', {"material": {"alpha_cutoff": 2}}), ['objects[0].material.alpha_cutoff', 'out of range'])
+expect_bad('alpha_to_coverage without MSAA', v2('v2a2c.json', {"material": {"alpha_to_coverage": True}}), ['objects[0].material.alpha_to_coverage', 'samples'])
+expect_bad('unknown interpolation', v2('v2int.json', {"material": {"interpolation": "linear"}}), ['objects[0].material.interpolation', 'unknown value'])
+
 # --- meshes
 s, m = obj_scene('missing_ref', 'v 0 0 0\n'); os.remove(m)
 expect_bad('missing mesh', s, ['missing_ref.obj', 'not found'])
