@@ -1,9 +1,9 @@
 // Pipeline state a draw runs with: the fixed-function switches of an OpenGL-like API.
 //
-// Draws whose state the fast back end handles (tile_back_end.h: depth test, one of the three
-// blend presets, color on or off, 1 or 4 samples) run there; anything else (stencil, other
-// blend equations, a partial color mask, alpha cutoff, alpha-to-coverage, 2, 8 or 16
-// samples) runs in the general back end (general_back_end.h), so scenes that do not use a
+// Draws whose state the fast back end handles (tile_back_end.h: depth test and offset, any
+// blend equation, color on or off, 1 or 4 samples) run there; anything else (stencil, a
+// partial color mask, alpha cutoff, alpha-to-coverage, 2, 8 or 16 samples) runs in the
+// general back end (general_back_end.h), so scenes that do not use a
 // feature pay nothing for it (needs_general_back_end below).
 #pragma once
 #include <cstdint>
@@ -83,7 +83,7 @@ struct RenderState {
 
 // Whether a draw needs the general back end (see the top of this file).
 inline bool needs_general_back_end(const RenderState& s, int samples) {
-    return s.stencil_test || s.blend == BlendMode::Custom || (s.color_write && s.color_mask != 0xf) || s.alpha_test ||
+    return s.stencil_test || (s.color_write && s.color_mask != 0xf) || s.alpha_test ||
            s.alpha_to_coverage || (samples != 1 && samples != 4);
 }
 

@@ -98,8 +98,17 @@ TEST(Blend, EightLanesEqualOneAtATime) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> c(-0.2f, 1.2f);
     std::uniform_int_distribution<int> byte(0, 255);
-    for (BlendMode mode : {BlendMode::Opaque, BlendMode::Alpha, BlendMode::Additive})
+    for (BlendMode mode : {BlendMode::Opaque, BlendMode::Alpha, BlendMode::Additive, BlendMode::Custom})
         for (int trial = 0; trial < 3000; ++trial) {
+            RenderState st;
+            st.blend = mode;
+            if (mode == BlendMode::Custom) {  // random equations, factors, constant and color mask
+                BlendEquationState& e = st.blend_equation;
+                auto eq = [&] { return BlendEquation(byte(rng) % 5); };
+                auto factor = [&] { return BlendFactor(byte(rng) % 15); };
+                e = {eq(), eq(), factor(), factor(), factor(), factor(), glm::vec4(c(rng), c(rng), c(rng), c(rng))};
+                st.color_mask = uint8_t(byte(rng) % 16);
+            }
             std::array<Rgba8, 8> row;
             for (Rgba8& p : row) p = {uint8_t(byte(rng)), uint8_t(byte(rng)), uint8_t(byte(rng)), uint8_t(byte(rng))};
             std::array<simd::f8, 4> src;
@@ -110,9 +119,13 @@ TEST(Blend, EightLanesEqualOneAtATime) {
             }
             std::array<Rgba8, 8> expected = row;
             for (int l = 0; l < simd::kLanes; ++l)
-                if (write[l]) expected[size_t(l)] = blend(mode, glm::vec4(src[0][l], src[1][l], src[2][l], src[3][l]), row[size_t(l)]);
-            if (mode == BlendMode::Opaque) blend_group<false>(mode, row.data(), 0, 8, write, src);
-            else blend_group<true>(mode, row.data(), 0, 8, write, src);
+                if (write[l]) {
+                    const glm::vec4 color(src[0][l], src[1][l], src[2][l], src[3][l]);
+                    expected[size_t(l)] = mode == BlendMode::Custom ? blend(BlendSettings(st), color, row[size_t(l)])
+                                                                    : blend(mode, color, row[size_t(l)]);
+                }
+            if (mode == BlendMode::Opaque) blend_group<false>(st, row.data(), 0, 8, write, src);
+            else blend_group<true>(st, row.data(), 0, 8, write, src);
             ASSERT_EQ(std::memcmp(row.data(), expected.data(), sizeof row), 0) << "mode " << int(mode) << " trial " << trial;
         }
 }

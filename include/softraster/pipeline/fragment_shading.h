@@ -46,18 +46,18 @@ inline void shade_fragment(const S& shader, const DepthStencil& depth, const Ren
     glm::vec4 color;
     if (!shader.fragment(v, frag, color)) return;
     depth.template write_pixel<Samples>(fb.depth_data() + base, pass, z);
-    if (state.color_write) merge_fragment<Samples, Blended>(state.blend, fb.color_data() + base, pass, color);
+    if (state.color_write) merge_fragment<Samples, Blended>(state, fb.color_data() + base, pass, color);
 }
 
 // Eight pixels [x, x + 8) of a row whose lanes `pass` passed the depth test: the batch
 // shader, then the output merge of those lanes.
 template <bool Blended, BatchShader S>
-inline void shade_group(const S& shader, BlendMode mode, Rgba8* row, int x, int width, simd::i8 pass,
+inline void shade_group(const S& shader, const RenderState& state, Rgba8* row, int x, int width, simd::i8 pass,
                         const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& varyings, simd::f8 z,
                         bool front_facing) {
     std::array<simd::f8, 4> rgba;
     shader.fragment_batch(varyings, z, front_facing, rgba);
-    blend_group<Blended>(mode, row, x, width, pass, rgba);
+    blend_group<Blended>(state, row, x, width, pass, rgba);
 }
 
 }  // namespace softraster

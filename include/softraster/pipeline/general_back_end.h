@@ -1,6 +1,6 @@
 // The general tile back end: draws whose state the fast back end (tile_back_end.h) does not
-// handle (a stencil test, any blend equation, a partial color mask, alpha cutoff,
-// alpha-to-coverage, 2, 8 or 16 samples; see needs_general_back_end in render_state.h), one
+// handle (a stencil test, a partial color mask, alpha cutoff, alpha-to-coverage, 2, 8 or
+// 16 samples; see needs_general_back_end in render_state.h), one
 // fragment at a time, with every per-fragment operation in OpenGL's order:
 //   fragment shader -> alpha cutoff (discard) -> alpha-to-coverage -> stencil test ->
 //   depth test -> stencil operations and depth write -> blending, under the color mask.

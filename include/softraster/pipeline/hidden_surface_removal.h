@@ -118,7 +118,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
                     if (!any(mine)) return;
                     const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
                     shaded += unsigned(__builtin_popcount(bits(mine)));
-                    shade_group</*Blended=*/false>(shader, BlendMode::Opaque, color, x, width, mine, interpolate_perspective(setup, i, j),
+                    shade_group</*Blended=*/false>(shader, state, color, x, width, mine, interpolate_perspective(setup, i, j),
                                                    interpolate_depth(setup, i, j), setup.front_facing);
                 });
             });
@@ -134,7 +134,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
                 glm::vec4 color;
                 shader.fragment(v, FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
                 ++shaded;
-                merge_fragment<Samples, /*Blended=*/false>(BlendMode::Opaque, fb.color_data() + fb.sample_index(px.x, px.y), mine, color);
+                merge_fragment<Samples, /*Blended=*/false>(state, fb.color_data() + fb.sample_index(px.x, px.y), mine, color);
             });
         }
     });

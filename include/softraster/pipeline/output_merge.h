@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstring>
+#include <type_traits>
 
 #include "softraster/framebuffer.h"
 #include "softraster/pipeline/simd.h"
@@ -27,6 +28,11 @@ namespace softraster {
 // llvmpipe use ((t + 128 + ((t + 128) >> 8)) >> 8 with t = x * y, Blinn 1995).
 inline unsigned mul_unorm8(unsigned x, unsigned y) {
     const unsigned t = x * y + 128;
+    return (t + (t >> 8)) >> 8;
+}
+
+inline simd::i8 mul_unorm8(simd::i8 x, simd::i8 y) {
+    const simd::i8 t = x * y + 128;
     return (t + (t >> 8)) >> 8;
 }
 
@@ -66,80 +72,92 @@ struct BlendSettings {
           color_mask(st.color_write ? st.color_mask : 0) {}
 };
 
-inline unsigned blend_factor(BlendFactor f, const std::array<unsigned, 4>& s, const std::array<unsigned, 4>& d,
-                             const std::array<unsigned, 4>& k, size_t c) {
+// One channel's factor and result, for one pixel (T = int) or eight (T = simd::i8, lane by
+// lane): the same code either way.
+template <class T>
+inline T blend_factor(BlendFactor f, const std::array<T, 4>& s, const std::array<T, 4>& d, const std::array<T, 4>& k, size_t c) {
+    const T zero{}, one = zero + 255;
     switch (f) {
-        case BlendFactor::Zero: return 0;
-        case BlendFactor::One: return 255;
+        case BlendFactor::Zero: return zero;
+        case BlendFactor::One: return one;
         case BlendFactor::SrcColor: return s[c];
-        case BlendFactor::OneMinusSrcColor: return 255 - s[c];
+        case BlendFactor::OneMinusSrcColor: return one - s[c];
         case BlendFactor::DstColor: return d[c];
-        case BlendFactor::OneMinusDstColor: return 255 - d[c];
+        case BlendFactor::OneMinusDstColor: return one - d[c];
         case BlendFactor::SrcAlpha: return s[3];
-        case BlendFactor::OneMinusSrcAlpha: return 255 - s[3];
+        case BlendFactor::OneMinusSrcAlpha: return one - s[3];
         case BlendFactor::DstAlpha: return d[3];
-        case BlendFactor::OneMinusDstAlpha: return 255 - d[3];
+        case BlendFactor::OneMinusDstAlpha: return one - d[3];
         case BlendFactor::ConstantColor: return k[c];
-        case BlendFactor::OneMinusConstantColor: return 255 - k[c];
+        case BlendFactor::OneMinusConstantColor: return one - k[c];
         case BlendFactor::ConstantAlpha: return k[3];
-        case BlendFactor::OneMinusConstantAlpha: return 255 - k[3];
-        case BlendFactor::SrcAlphaSaturate: return c == 3 ? 255 : std::min(s[3], 255 - d[3]);
+        case BlendFactor::OneMinusConstantAlpha: return one - k[3];
+        case BlendFactor::SrcAlphaSaturate: return c == 3 ? one : (s[3] < one - d[3] ? s[3] : one - d[3]);
     }
-    return 0;
+    return zero;
 }
 
-inline unsigned blend_channel(BlendEquation e, unsigned s, unsigned sf, unsigned d, unsigned df) {
+template <class T>
+inline T blend_channel(BlendEquation e, T s, T sf, T d, T df) {
+    const T zero{}, one = zero + 255;
+    auto mul_unorm8 = [](T x, T y) {
+        if constexpr (std::is_same_v<T, int>) return int(softraster::mul_unorm8(unsigned(x), unsigned(y)));
+        else return softraster::mul_unorm8(x, y);
+    };
+    auto clamp = [&](T v) { return v < zero ? zero : (v > one ? one : v); };
     switch (e) {
-        case BlendEquation::Add: return std::min(255u, mul_unorm8(s, sf) + mul_unorm8(d, df));
-        case BlendEquation::Subtract: {
-            const unsigned a = mul_unorm8(s, sf), b = mul_unorm8(d, df);
-            return a > b ? a - b : 0;
-        }
-        case BlendEquation::ReverseSubtract: {
-            const unsigned a = mul_unorm8(s, sf), b = mul_unorm8(d, df);
-            return b > a ? b - a : 0;
-        }
-        case BlendEquation::Min: return std::min(s, d);
-        case BlendEquation::Max: return std::max(s, d);
+        case BlendEquation::Add: return clamp(mul_unorm8(s, sf) + mul_unorm8(d, df));
+        case BlendEquation::Subtract: return clamp(mul_unorm8(s, sf) - mul_unorm8(d, df));
+        case BlendEquation::ReverseSubtract: return clamp(mul_unorm8(d, df) - mul_unorm8(s, sf));
+        case BlendEquation::Min: return s < d ? s : d;
+        case BlendEquation::Max: return s > d ? s : d;
     }
     return s;
+}
+
+// All four channels, under the color mask (a masked channel keeps d).
+template <class T>
+inline std::array<T, 4> blend_channels(const BlendSettings& b, const std::array<T, 4>& s, const std::array<T, 4>& d,
+                                       const std::array<T, 4>& k) {
+    std::array<T, 4> out;
+    for (size_t c = 0; c < 4; ++c) {
+        if (!(b.color_mask & (1u << c))) {
+            out[c] = d[c];
+            continue;
+        }
+        const bool alpha = c == 3;
+        const T sf = blend_factor(alpha ? b.eq.src_alpha : b.eq.src_rgb, s, d, k, c);
+        const T df = blend_factor(alpha ? b.eq.dst_alpha : b.eq.dst_rgb, s, d, k, c);
+        out[c] = blend_channel(alpha ? b.eq.alpha : b.eq.rgb, s[c], sf, d[c], df);
+    }
+    return out;
 }
 
 // The blended color of a fragment over dst, with the draw's color mask applied.
 inline Rgba8 blend(const BlendSettings& b, const glm::vec4& src, Rgba8 dst) {
     const Rgba8 q = quantize_rgba8(src);
-    const std::array<unsigned, 4> s{q.r, q.g, q.b, q.a}, d{dst.r, dst.g, dst.b, dst.a},
-        k{b.constant.r, b.constant.g, b.constant.b, b.constant.a};
-    std::array<uint8_t, 4> out;
-    for (size_t c = 0; c < 4; ++c) {
-        if (!(b.color_mask & (1u << c))) {
-            out[c] = uint8_t(d[c]);
-            continue;
-        }
-        const bool alpha = c == 3;
-        const BlendEquation e = alpha ? b.eq.alpha : b.eq.rgb;
-        const unsigned sf = blend_factor(alpha ? b.eq.src_alpha : b.eq.src_rgb, s, d, k, c);
-        const unsigned df = blend_factor(alpha ? b.eq.dst_alpha : b.eq.dst_rgb, s, d, k, c);
-        out[c] = uint8_t(blend_channel(e, s[c], sf, d[c], df));
-    }
-    return {out[0], out[1], out[2], out[3]};
+    const auto out = blend_channels<int>(b, {q.r, q.g, q.b, q.a}, {dst.r, dst.g, dst.b, dst.a},
+                                         {b.constant.r, b.constant.g, b.constant.b, b.constant.a});
+    return {uint8_t(out[0]), uint8_t(out[1]), uint8_t(out[2]), uint8_t(out[3])};
 }
 
 // Writes one shaded fragment's color to the samples in `mask` of a pixel. Blended: the
 // draw blends (its mode is read here), the one blending fact the back end is compiled for,
 // so that opaque draws never look at a blend mode.
 template <int Samples, bool Blended>
-inline void merge_fragment(BlendMode mode, Rgba8* color, unsigned mask, const glm::vec4& src) {
+inline void merge_fragment(const RenderState& st, Rgba8* color, unsigned mask, const glm::vec4& src) {
+    if (Blended && st.blend == BlendMode::Custom) {
+        const BlendSettings b(st);
+        for (int s = 0; s < Samples; ++s)
+            if (mask & (1u << s)) color[s] = blend(b, src, color[s]);
+        return;
+    }
     for (int s = 0; s < Samples; ++s)
-        if (mask & (1u << s)) color[s] = Blended ? blend(mode, src, color[s]) : quantize_rgba8(src);
+        if (mask & (1u << s)) color[s] = Blended ? blend(st.blend, src, color[s]) : quantize_rgba8(src);
 }
 
 // ---- eight pixels of a row at once (see tile_back_end.h)
 
-inline simd::i8 mul_unorm8(simd::i8 x, simd::i8 y) {
-    const simd::i8 t = x * y + 128;
-    return (t + (t >> 8)) >> 8;
-}
 
 // Eight colors (r, g, b, a lanes) quantized to 8 bits per channel, packed as Rgba8.
 inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c) {
@@ -150,8 +168,9 @@ inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c) {
 // Blends colors c (r, g, b, a lanes) into the group of eight RGBA8 pixels from row[x] on
 // (simd.h), where `write` is set: the same arithmetic as blend() above, lane by lane.
 template <bool Blended>
-inline void blend_group(BlendMode mode, Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
+inline void blend_group(const RenderState& st, Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
     using simd::i8;
+    const BlendMode mode = st.blend;
     const i8 old = simd::load_group<i8>(row, x, width);
     if (!Blended || mode == BlendMode::Opaque) {
         simd::store_group(row, x, width, simd::select(write, quantize_pack_rgba8(c), old));
@@ -160,6 +179,14 @@ inline void blend_group(BlendMode mode, Rgba8* row, int x, int width, simd::i8 w
     const i8 sr = simd::quantize_unorm8(c[0]), sg = simd::quantize_unorm8(c[1]), sb = simd::quantize_unorm8(c[2]),
              sa = simd::quantize_unorm8(c[3]);
     const i8 dr = old & 255, dg = (old >> 8) & 255, db = (old >> 16) & 255, da = (old >> 24) & 255;
+    if (mode == BlendMode::Custom) {  // every equation and factor, eight lanes at once
+        const BlendSettings b(st);
+        const Rgba8 k = b.constant;
+        const auto out = blend_channels<i8>(b, {sr, sg, sb, sa}, {dr, dg, db, da},
+                                            {simd::splat_i(k.r), simd::splat_i(k.g), simd::splat_i(k.b), simd::splat_i(k.a)});
+        simd::store_group(row, x, width, simd::select(write, out[0] | (out[1] << 8) | (out[2] << 16) | (out[3] << 24), old));
+        return;
+    }
     i8 r, g, b, a;
     if (mode == BlendMode::Alpha) {
         const i8 inv = 255 - sa;

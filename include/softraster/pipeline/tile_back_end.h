@@ -175,7 +175,7 @@ struct TileBackEnd {
                 if (!any(pass)) return;
                 shaded += unsigned(__builtin_popcount(bits(pass)));
                 if (!state.color_write) return;
-                shade_group<Blended>(shader, state.blend, color_row, x, width, pass, interpolate_perspective(t, i, j), z, t.front_facing);
+                shade_group<Blended>(shader, state, color_row, x, width, pass, interpolate_perspective(t, i, j), z, t.front_facing);
             });
         });
         return shaded;
