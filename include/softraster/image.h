@@ -21,4 +21,11 @@ struct Image {
     const Rgba8& at(int x, int y) const { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
 };
 
+// One channel of `width` x `height` values, row 0 at the top (depth and stencil pictures).
+template <class T>
+struct GrayImage {
+    int width = 0, height = 0;
+    std::vector<T> values;
+};
+
 }  // namespace softraster

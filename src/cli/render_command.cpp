@@ -1,22 +1,43 @@
 #include <chrono>
+#include <cstdio>
 #include <memory>
 #include <string>
 
 #include "cli/commands.h"
 #include "cli/output.h"
+#include "softraster/error.h"
+#include "softraster/io/image_write.h"
+#include "softraster/pipeline/resolve.h"
 #include "softraster/scene/scene_renderer.h"
 
 namespace softraster::cli {
+namespace {
+
+template <class T>
+void write_buffer(const GrayImage<T>& picture, const std::string& path) {
+    try {
+        write_gray(picture, path);
+    } catch (const std::runtime_error& e) {
+        throw InputError(e.what());
+    }
+    std::fprintf(stderr, "wrote %s (%dx%d)\n", path.c_str(), picture.width, picture.height);
+}
+
+}  // namespace
 
 Run add_render_command(CLI::App& app) {
     struct Options {
-        std::string scene, out;
+        std::string scene, out, depth_out, stencil_out;
         int threads = 0;
     };
     auto opt = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("render", "Render a scene file (format version 1) to a PNG");
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene file to a picture (PNG, TGA, PPM or EXR)");
     cmd->add_option("scene", opt->scene, "Scene file (.json)")->required();
-    cmd->add_option("-o,--output", opt->out, "Output PNG (default: the scene's name with .png, in this folder)");
+    cmd->add_option("-o,--output", opt->out,
+                    "Output picture, format by extension: .png, .tga, .ppm, .exr (float, linear) (default: the scene's name with .png)");
+    cmd->add_option("--depth-out", opt->depth_out,
+                    "Also write the depth buffer: .png (16-bit, scaled from its least to its greatest finite value) or .exr (float, as stored)");
+    cmd->add_option("--stencil-out", opt->stencil_out, "Also write the stencil buffer as an 8-bit gray .png");
     cmd->add_option("--threads", opt->threads, "Worker threads (0: one per core); the picture is the same for any count")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
@@ -26,10 +47,21 @@ Run add_render_command(CLI::App& app) {
         const std::filesystem::path out =
             opt->out.empty() ? std::filesystem::path(scene_path.stem().string() + ".png") : std::filesystem::path(opt->out);
         check_output_path(out);
+        if (!opt->depth_out.empty()) check_output_path(opt->depth_out, {PictureFormat::Png, PictureFormat::Exr});
+        if (!opt->stencil_out.empty()) check_output_path(opt->stencil_out, {PictureFormat::Png});
         const auto start = std::chrono::steady_clock::now();
         const Scene scene = load_scene(scene_path);
-        const Image image = SceneRenderer(scene, thread_count(opt->threads)).render();
-        write_output(image, out, std::chrono::steady_clock::now() - start);
+        const SceneRenderer renderer(scene, thread_count(opt->threads));
+        Framebuffer fb = renderer.make_framebuffer();
+        renderer.render(fb);
+        write_output(renderer.resolve(fb), out, std::chrono::steady_clock::now() - start);
+        // (The buffers at the resolution they were rendered at: supersampled scenes' are larger.)
+        if (!opt->depth_out.empty()) {
+            const GrayImage<float> depth = depth_picture(fb);
+            if (picture_format(opt->depth_out) == PictureFormat::Exr) write_buffer(depth, opt->depth_out);
+            else write_buffer(normalize_depth16(depth), opt->depth_out);
+        }
+        if (!opt->stencil_out.empty()) write_buffer(stencil_picture(fb, scene.clear_stencil), opt->stencil_out);
         return 0;
     };
 }

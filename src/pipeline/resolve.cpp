@@ -1,6 +1,7 @@
 // Stage 10, resolve: the multisampled buffer becomes the picture.
 // Each channel of a pixel is floor(mean + 0.5) of its stored 8-bit samples.
 #include <algorithm>
+#include <cmath>
 
 #include "softraster/pipeline/resolve.h"
 
@@ -55,6 +56,33 @@ Image downsample_box(const Image& in, int k) {
             out.pixels[size_t(y) * size_t(out.width) + size_t(x)] = {uint8_t(sum[0] / n), uint8_t(sum[1] / n), uint8_t(sum[2] / n),
                                                                     uint8_t(sum[3] / n)};
         }
+    return out;
+}
+
+GrayImage<float> depth_picture(const Framebuffer& fb) {
+    GrayImage<float> out{fb.width(), fb.height(), std::vector<float>(size_t(fb.width()) * size_t(fb.height()))};
+    for (int y = 0; y < fb.height(); ++y)
+        for (int x = 0; x < fb.width(); ++x) out.values[size_t(y) * size_t(fb.width()) + size_t(x)] = fb.depth_data()[fb.sample_index(x, y)];
+    return out;
+}
+
+GrayImage<uint8_t> stencil_picture(const Framebuffer& fb, uint8_t clear) {
+    GrayImage<uint8_t> out{fb.width(), fb.height(), std::vector<uint8_t>(size_t(fb.width()) * size_t(fb.height()), clear)};
+    if (!fb.has_stencil()) return out;
+    for (int y = 0; y < fb.height(); ++y)
+        for (int x = 0; x < fb.width(); ++x) out.values[size_t(y) * size_t(fb.width()) + size_t(x)] = fb.stencil_data()[fb.sample_index(x, y)];
+    return out;
+}
+
+GrayImage<uint16_t> normalize_depth16(const GrayImage<float>& depth) {
+    float lo = HUGE_VALF, hi = -HUGE_VALF;
+    for (float z : depth.values)
+        if (std::isfinite(z)) lo = std::min(lo, z), hi = std::max(hi, z);
+    GrayImage<uint16_t> out{depth.width, depth.height, std::vector<uint16_t>(depth.values.size(), 0)};
+    if (!(hi > lo)) return out;
+    const double scale = 65535.0 / (double(hi) - double(lo));
+    for (size_t i = 0; i < depth.values.size(); ++i)
+        if (std::isfinite(depth.values[i])) out.values[i] = uint16_t(std::lround((double(depth.values[i]) - lo) * scale));
     return out;
 }
 

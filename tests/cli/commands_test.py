@@ -42,6 +42,51 @@ r = run([example, out])
 if r.returncode != 0 or png_size(out) != (480, 360):
     failures.append('example: %d %s' % (r.returncode, r.stderr))
 
+# --- output formats and the pictures of the depth and stencil buffers
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+import imgdiff  # noqa: E402
+mirror = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scenes', 'v2_stencil_mirror.json')
+P = lambda name: os.path.join(work, name)
+r = run([exe, 'render', mirror, '-o', P('m.png')])
+w, h, ch, rgba = imgdiff.read_png(P('m.png'))
+r = run([exe, 'render', mirror, '-o', P('m.ppm'), '--depth-out', P('d.png'), '--stencil-out', P('s.png')])
+if r.returncode != 0:
+    failures.append('render with --depth-out/--stencil-out: %d %s' % (r.returncode, r.stderr))
+else:
+    ppm = open(P('m.ppm'), 'rb').read()
+    header = b'P6\n%d %d\n255\n' % (w, h)
+    rgb = bytes(b for i, b in enumerate(rgba) if i % 4 != 3)
+    if not ppm.startswith(header) or ppm[len(header):] != rgb:
+        failures.append('PPM output differs from the PNG output')
+    sw, sh, sc, stencil = imgdiff.read_png(P('s.png'))
+    if (sw, sh, sc) != (w, h, 1) or set(stencil) != {0, 1} or stencil.count(1) < 2000:
+        failures.append('stencil picture: %dx%d, %d channels, values %s' % (sw, sh, sc, sorted(set(stencil))[:8]))
+    d = open(P('d.png'), 'rb').read()
+    width, height, depth, color = struct.unpack('>IIBB', d[16:26])
+    idat, pos = b'', 8
+    while pos < len(d):
+        n, t = struct.unpack('>I4s', d[pos:pos + 8])
+        if t == b'IDAT':
+            idat += d[pos + 8:pos + 8 + n]
+        pos += 12 + n
+    raw = imgdiff._unfilter(zlib.decompress(idat), width, height, 2)
+    z = struct.unpack('>%dH' % (width * height), bytes(raw))
+    if (width, height, depth, color) != (w, h, 16, 0) or min(z) != 0 or max(z) != 65535 or z[0] != 65535:
+        failures.append('depth picture: %dx%d, %d bits, color type %d, range %d..%d, corner %d' %
+                        (width, height, depth, color, min(z), max(z), z[0]))
+r = run([exe, 'render', mirror, '-o', P('m.exr'), '--depth-out', P('d.exr')])
+if r.returncode != 0 or any(open(P(f), 'rb').read(4) != b'\x76\x2f\x31\x01' for f in ('m.exr', 'd.exr')):
+    failures.append('EXR output: %d %s' % (r.returncode, r.stderr))
+r = run([exe, 'render', mirror, '-o', P('m.tga')])
+tga = open(P('m.tga'), 'rb').read(18) if r.returncode == 0 else b''
+if len(tga) < 18 or tga[2] not in (2, 10) or struct.unpack('<HH', tga[12:16]) != (w, h) or tga[16] != 32:
+    failures.append('TGA output: %d %s' % (r.returncode, r.stderr))
+for args, what in (([P('x.jpg')], 'a .jpg output'), ([P('y.png'), '--stencil-out', P('s.exr')], 'a float stencil'),
+                   ([P('y.png'), '--depth-out', P('d.tga')], 'a TGA depth picture')):
+    r = run([exe, 'render', mirror, '-o'] + args)
+    if r.returncode != 2 or len(r.stderr.strip().split('\n')) != 1 or os.path.exists(P('y.png')):
+        failures.append('%s should be refused (exit 2, one line, no output): %d %r' % (what, r.returncode, r.stderr))
+
 if failures:
     print('FAILED:\n  ' + '\n  '.join(failures))
     sys.exit(1)

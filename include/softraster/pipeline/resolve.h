@@ -14,4 +14,12 @@ void resolve(const Framebuffer& fb, Image& out);
 // (whose size is k times the result's), each channel floor(mean + 0.5) of the block's values.
 Image downsample_box(const Image& in, int k);
 
+// Pictures of the other buffers, one value per pixel (its first sample): the stored depth,
+// and the stencil values (`clear` everywhere when the framebuffer has no stencil buffer).
+GrayImage<float> depth_picture(const Framebuffer& fb);
+GrayImage<uint8_t> stencil_picture(const Framebuffer& fb, uint8_t clear);
+// Depth as 16-bit gray: 65535 (z - lo) / (hi - lo) rounded, lo and hi the least and greatest
+// finite values (all 0 when they are equal or there are none; non-finite values give 0).
+GrayImage<uint16_t> normalize_depth16(const GrayImage<float>& depth);
+
 }  // namespace softraster
