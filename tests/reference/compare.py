@@ -61,7 +61,7 @@ def main(argv):
 REPORT_HEAD = """# Conformance
 
 softraster's claim is that it draws what a conformant OpenGL implementation draws for the
-scene format (`docs/scene-format.md`, version 1). The test suite checks it in two
+scene format (`docs/scene-format.md`, versions 1 and 2). The test suite checks it in two
 ways, both run by ctest:
 
 1. `conformance.*`: the scenes in `tests/conformance/` (copied from `../shared`) against the
@@ -77,8 +77,15 @@ least {psnr:.0f} dB (`tests/tools/imgdiff.py`).
 
 An OpenGL 3.3 core context from OSMesa; it refuses to run unless `GL_RENDERER` names
 llvmpipe. It renders into a framebuffer object with an `GL_RGBA8` color and a
-`GL_DEPTH_COMPONENT32F` depth renderbuffer (4 samples when the scene asks, resolved with
-`glBlitFramebuffer`), with GLSL shaders that spell out the spec's formulas. It shares only
+`GL_DEPTH32F_STENCIL8` depth-stencil renderbuffer (4 samples when the scene asks, resolved
+with `glBlitFramebuffer`), with GLSL shaders that spell out the spec's formulas. Version 2
+keys become the same GL state: `glDepthFunc`, `glDepthMask`, `glPolygonOffset`,
+`glStencilFuncSeparate`/`glStencilOpSeparate`/`glStencilMaskSeparate` per face,
+`glBlendEquationSeparate`, `glBlendFuncSeparate`, `glBlendColor`, `glColorMask`, `glScissor`,
+`GL_SAMPLE_ALPHA_TO_COVERAGE`, `discard` below the alpha cutoff and `noperspective`
+varyings in GLSL; supersampled scenes are drawn k times larger and box-filtered on the CPU.
+llvmpipe draws only 1 and 4 samples: 2, 8 and 16 are proved by properties in
+`tests/pipeline/sample_patterns_test.cpp` instead. It shares only
 the scene loader (meshes, textures, the spec's matrices) with softraster; draw order, flat
 normals, culling, blending and all rasterization are its own or Mesa's.
 
