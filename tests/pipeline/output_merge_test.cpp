@@ -124,8 +124,8 @@ TEST(Blend, EightLanesEqualOneAtATime) {
                     expected[size_t(l)] = mode == BlendMode::Custom ? blend(BlendSettings(st), color, row[size_t(l)])
                                                                     : blend(mode, color, row[size_t(l)]);
                 }
-            if (mode == BlendMode::Opaque) blend_group<false>(st, row.data(), 0, 8, write, src);
-            else blend_group<true>(st, row.data(), 0, 8, write, src);
+            if (mode == BlendMode::Opaque) blend_group<false>(BlendSettings(st), row.data(), 0, 8, write, src);
+            else blend_group<true>(BlendSettings(st), row.data(), 0, 8, write, src);
             ASSERT_EQ(std::memcmp(row.data(), expected.data(), sizeof row), 0) << "mode " << int(mode) << " trial " << trial;
         }
 }

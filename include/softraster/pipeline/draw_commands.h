@@ -199,7 +199,7 @@ public:
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
         const Rect rect = scissored(tile_rect, state_);
         if (rect.empty()) return 0;
-        const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), triangles(), *target.fb};
+        const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), BlendSettings(state_), triangles(), *target.fb};
         const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
         return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
     }

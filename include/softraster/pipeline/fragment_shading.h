@@ -34,7 +34,7 @@ concept PureShader = requires { requires S::kPure; };
 // (depth_stencil.h), the shader with the varyings make_varyings() returns, then the depth
 // write and the output merge for the samples that passed, unless the shader discarded.
 template <int Samples, bool Blended, class DepthStencil, Shader S, class MakeVaryings>
-inline void shade_fragment(const S& shader, const DepthStencil& depth, const RenderState& state, Framebuffer& fb, int x, int y,
+inline void shade_fragment(const S& shader, const DepthStencil& depth, const BlendSettings& blend, Framebuffer& fb, int x, int y,
                            unsigned covered, const float* z, float center_z, bool front_facing,
                            MakeVaryings&& make_varyings, uint64_t& shaded) {
     const size_t base = fb.sample_index(x, y);
@@ -46,18 +46,18 @@ inline void shade_fragment(const S& shader, const DepthStencil& depth, const Ren
     glm::vec4 color;
     if (!shader.fragment(v, frag, color)) return;
     depth.template write_pixel<Samples>(fb.depth_data() + base, pass, z);
-    if (state.color_write) merge_fragment<Samples, Blended>(state, fb.color_data() + base, pass, color);
+    if (blend.color_mask) merge_fragment<Samples, Blended>(blend, fb.color_data() + base, pass, color);
 }
 
 // Eight pixels [x, x + 8) of a row whose lanes `pass` passed the depth test: the batch
 // shader, then the output merge of those lanes.
 template <bool Blended, BatchShader S>
-inline void shade_group(const S& shader, const RenderState& state, Rgba8* row, int x, int width, simd::i8 pass,
+inline void shade_group(const S& shader, const BlendSettings& blend, Rgba8* row, int x, int width, simd::i8 pass,
                         const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& varyings, simd::f8 z,
                         bool front_facing) {
     std::array<simd::f8, 4> rgba;
     shader.fragment_batch(varyings, z, front_facing, rgba);
-    blend_group<Blended>(state, row, x, width, pass, rgba);
+    blend_group<Blended>(blend, row, x, width, pass, rgba);
 }
 
 }  // namespace softraster

@@ -101,7 +101,7 @@ void general_fragment(const S& shader, const FragmentOps& ops, Framebuffer& fb, 
     unsigned pass = covered;
     if (ops.early) {
         pass = ops.tests.test_and_write(depth, stencil, ops.samples, covered, z, front_facing);
-        if (!pass) return;
+        if (!pass || !ops.blend.color_mask) return;  // (no color to write: the shader's result would go nowhere)
     }
     ++shaded;
     glm::vec4 color;
@@ -114,8 +114,9 @@ void general_fragment(const S& shader, const FragmentOps& ops, Framebuffer& fb, 
     }
     if (!ops.blend.color_mask) return;
     Rgba8* c = fb.color_data() + base;
+    const Rgba8 q = quantize_rgba8(color);
     for (int s = 0; s < ops.samples; ++s)
-        if (pass & (1u << s)) c[s] = blend(ops.blend, color, c[s]);
+        if (pass & (1u << s)) c[s] = ops.blend.replace ? q : blend(ops.blend, color, c[s]);
 }
 
 // Calls on_pixel(setup, pixel) for every covered pixel of the draw's triangles in tile

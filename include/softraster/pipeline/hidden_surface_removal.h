@@ -104,6 +104,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
     constexpr int N = kVaryingCount<typename S::Varyings>;
     using V = typename S::Varyings;
     const int width = fb.width();
+    const BlendSettings blend(state);
     uint64_t shaded = 0;
     for_each_triangle_setup<Samples>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
         const uint32_t me = owner_id(draw, id);
@@ -118,7 +119,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
                     if (!any(mine)) return;
                     const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
                     shaded += unsigned(__builtin_popcount(bits(mine)));
-                    shade_group</*Blended=*/false>(shader, state, color, x, width, mine, interpolate_perspective(setup, i, j),
+                    shade_group</*Blended=*/false>(shader, blend, color, x, width, mine, interpolate_perspective(setup, i, j),
                                                    interpolate_depth(setup, i, j), setup.front_facing);
                 });
             });
@@ -134,7 +135,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
                 glm::vec4 color;
                 shader.fragment(v, FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
                 ++shaded;
-                merge_fragment<Samples, /*Blended=*/false>(state, fb.color_data() + fb.sample_index(px.x, px.y), mine, color);
+                merge_fragment<Samples, /*Blended=*/false>(blend, fb.color_data() + fb.sample_index(px.x, px.y), mine, color);
             });
         }
     });

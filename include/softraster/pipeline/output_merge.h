@@ -63,13 +63,17 @@ inline Rgba8 blend(BlendMode mode, const glm::vec4& src, Rgba8 dst) {
 
 // The draw's blend settings, ready for the per-fragment arithmetic.
 struct BlendSettings {
+    BlendMode mode;
     BlendEquationState eq;
     Rgba8 constant;
     uint8_t color_mask = 0xf;  // bits r, g, b, a
+    bool replace = false;      // the source replaces every channel: no arithmetic needed
     explicit BlendSettings(const RenderState& st)
-        : eq(st.blend == BlendMode::Custom ? st.blend_equation : blend_preset(st.blend)),
+        : mode(st.blend),
+          eq(st.blend == BlendMode::Custom ? st.blend_equation : blend_preset(st.blend)),
           constant(quantize_rgba8(eq.constant)),
-          color_mask(st.color_write ? st.color_mask : 0) {}
+          color_mask(st.color_write ? st.color_mask : 0),
+          replace(st.blend == BlendMode::Opaque && color_mask == 0xf) {}
 };
 
 // One channel's factor and result, for one pixel (T = int) or eight (T = simd::i8, lane by
@@ -145,15 +149,14 @@ inline Rgba8 blend(const BlendSettings& b, const glm::vec4& src, Rgba8 dst) {
 // draw blends (its mode is read here), the one blending fact the back end is compiled for,
 // so that opaque draws never look at a blend mode.
 template <int Samples, bool Blended>
-inline void merge_fragment(const RenderState& st, Rgba8* color, unsigned mask, const glm::vec4& src) {
-    if (Blended && st.blend == BlendMode::Custom) {
-        const BlendSettings b(st);
+inline void merge_fragment(const BlendSettings& b, Rgba8* color, unsigned mask, const glm::vec4& src) {
+    if (Blended && b.mode == BlendMode::Custom) {
         for (int s = 0; s < Samples; ++s)
             if (mask & (1u << s)) color[s] = blend(b, src, color[s]);
         return;
     }
     for (int s = 0; s < Samples; ++s)
-        if (mask & (1u << s)) color[s] = Blended ? blend(st.blend, src, color[s]) : quantize_rgba8(src);
+        if (mask & (1u << s)) color[s] = Blended ? blend(b.mode, src, color[s]) : quantize_rgba8(src);
 }
 
 // ---- eight pixels of a row at once (see tile_back_end.h)
@@ -168,9 +171,9 @@ inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c) {
 // Blends colors c (r, g, b, a lanes) into the group of eight RGBA8 pixels from row[x] on
 // (simd.h), where `write` is set: the same arithmetic as blend() above, lane by lane.
 template <bool Blended>
-inline void blend_group(const RenderState& st, Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
+inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
     using simd::i8;
-    const BlendMode mode = st.blend;
+    const BlendMode mode = settings.mode;
     const i8 old = simd::load_group<i8>(row, x, width);
     if (!Blended || mode == BlendMode::Opaque) {
         simd::store_group(row, x, width, simd::select(write, quantize_pack_rgba8(c), old));
@@ -180,9 +183,8 @@ inline void blend_group(const RenderState& st, Rgba8* row, int x, int width, sim
              sa = simd::quantize_unorm8(c[3]);
     const i8 dr = old & 255, dg = (old >> 8) & 255, db = (old >> 16) & 255, da = (old >> 24) & 255;
     if (mode == BlendMode::Custom) {  // every equation and factor, eight lanes at once
-        const BlendSettings b(st);
-        const Rgba8 k = b.constant;
-        const auto out = blend_channels<i8>(b, {sr, sg, sb, sa}, {dr, dg, db, da},
+        const Rgba8 k = settings.constant;
+        const auto out = blend_channels<i8>(settings, {sr, sg, sb, sa}, {dr, dg, db, da},
                                             {simd::splat_i(k.r), simd::splat_i(k.g), simd::splat_i(k.b), simd::splat_i(k.a)});
         simd::store_group(row, x, width, simd::select(write, out[0] | (out[1] << 8) | (out[2] << 16) | (out[3] << 24), old));
         return;

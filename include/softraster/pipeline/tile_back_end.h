@@ -83,6 +83,7 @@ struct TileBackEnd {
     S shader;
     RenderState state;
     DepthStencil depth;
+    BlendSettings blend;
     BinnedTriangles<N> triangles;
     Framebuffer& fb;
 
@@ -151,7 +152,7 @@ struct TileBackEnd {
         uint64_t shaded = 0;
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
             const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
-            shade_fragment<Samples, Blended>(shader, depth, state, fb, px.x, px.y, px.mask, px.z.data(),
+            shade_fragment<Samples, Blended>(shader, depth, blend, fb, px.x, px.y, px.mask, px.z.data(),
                                        interpolate_depth(t, i, j), t.front_facing,
                                        [&] { return from_array<V>(interpolate_perspective(t, i, j)); }, shaded);
         });
@@ -175,7 +176,7 @@ struct TileBackEnd {
                 if (!any(pass)) return;
                 shaded += unsigned(__builtin_popcount(bits(pass)));
                 if (!state.color_write) return;
-                shade_group<Blended>(shader, state, color_row, x, width, pass, interpolate_perspective(t, i, j), z, t.front_facing);
+                shade_group<Blended>(shader, blend, color_row, x, width, pass, interpolate_perspective(t, i, j), z, t.front_facing);
             });
         });
         return shaded;
