@@ -179,6 +179,27 @@ bench_highpoly took 31% longer, bench_many_objects 23%); a depth-only path for o
 draws without color writes (it made bench_highpoly_480 30% slower through code layout
 in the flattened loop, and saved no build time).
 
+## Version 2 scenes
+
+`bench/scenes/make_bench_v2.py` writes them. bench_msaa16 is bench_msaa's sphere with 16
+samples, which llvmpipe cannot draw (it offers 1 and 4): the row has softraster's time only.
+bench_stencil (a mirror floor marks the stencil, six reflected objects draw where it is 1,
+then the blended mirror and the objects) and bench_blend_modes (twelve full-screen layers,
+each with another equation and factors, depth test off) do not meet the target yet:
+
+- Draws with any blend equation run in the fast back end, eight pixels at a time
+  (`blend_channels<simd::i8>`); the blend settings are made once per draw and tile. A
+  custom layer still costs about 40% more than an alpha-preset layer of bench_blend
+  (10.5 against 7.4 ms per 1080p layer at 1 thread): the factor and equation choices are
+  switches inside the pixel loop. Next: choose them once per draw (a table of the eight
+  factor sources and an invert mask, selected without branches).
+- Stencil draws run in the general back end (`general_back_end.h`): one fragment at a
+  time, one indirect call per pixel, the shader run on one pixel. The reflected objects
+  are about a third of bench_stencil's time; the stencil-only mirror pass no longer runs
+  its shader (no color is written). Next: a stencil test in the fast back end's groups of
+  eight (its depth-stencil stage is already a template parameter), compiled only for the
+  shaders of draws that test stencil.
+
 ## Where the rest of the gap is
 
 What the profiles (`perf record` on `softraster bench`) point at next:

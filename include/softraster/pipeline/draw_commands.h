@@ -255,10 +255,12 @@ public:
     size_t primitive_chunks() const override { return (indices_.size() / 3 + kTriangleChunk - 1) / kTriangleChunk; }
     void bin_primitive_chunk(size_t c, const DrawTarget& target) override {
         const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
-        with_sample_count(ops_.samples, [&]<int Samples>() {
-            phases::bin_triangles<Samples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), target,
+        // Binned by the 16-sample pattern's extent, which holds every pattern's (sample_pattern.h):
+        // a tile may get a triangle that covers none of its samples (rasterization finds none),
+        // never miss one; and binning, flattened in its AVX2 copy, is compiled for one more sample
+        // count instead of four.
+        phases::bin_triangles<kMaxSamples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), target,
                                            FaceState{state_.cull, state_.front_face}, bins_[c]);
-        });
     }
     void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
 
