@@ -168,17 +168,19 @@ void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& sta
 }
 }  // namespace phases
 
-template <Shader S, int Samples, bool Blended>
-class TriangleCommand final : public Command {
+// The front end of a triangle draw, the same for both back ends: vertex processing and
+// binning in chunks (binned for the extent of BinSamples' sample pattern), then the
+// draw's triangles per tile.
+template <Shader S, int BinSamples>
+class TriangleFrontEnd : public Command {
 public:
     static constexpr int N = kVaryingCount<typename S::Varyings>;
     using Vertex = typename S::Vertex;
 
-    TriangleCommand(const S& shader, const RenderState& state, std::span<const Vertex> vertices, std::span<const uint32_t> indices)
-        : shader_(shader), state_(state), vertices_(vertices), indices_(indices) {
-        allows_hsr_ = PureShader<S> && !Blended && softraster::allows_hidden_surface_removal(state_);
-    }
+    TriangleFrontEnd(const S& shader, const RenderState& state, std::span<const Vertex> vertices, std::span<const uint32_t> indices)
+        : shader_(shader), state_(state), vertices_(vertices), indices_(indices) {}
 
+    bool uses_stencil() const override { return state_.stencil_test; }
     void prepare() override {
         post_.resize(vertices_.size());
         bins_.resize(primitive_chunks());
@@ -191,13 +193,36 @@ public:
     size_t primitive_chunks() const override { return (indices_.size() / 3 + kTriangleChunk - 1) / kTriangleChunk; }
     void bin_primitive_chunk(size_t c, const DrawTarget& target) override {
         const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
-        phases::bin_triangles<Samples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), target,
-                                       FaceState{state_.cull, state_.front_face}, bins_[c]);
+        phases::bin_triangles<BinSamples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), target,
+                                          FaceState{state_.cull, state_.front_face}, bins_[c]);
     }
     void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
 
+protected:
+    BinnedTriangles<N> triangles() const { return {std::span<const TriangleBin<N>>(bins_), post_.data()}; }
+
+    S shader_;
+    RenderState state_;
+    std::span<const Vertex> vertices_;
+    std::span<const uint32_t> indices_;
+    std::vector<ShadedVertex<N>> post_;
+    std::vector<TriangleBin<N>> bins_;
+};
+
+template <Shader S, int Samples, bool Blended>
+class TriangleCommand final : public TriangleFrontEnd<S, Samples> {
+    using Base = TriangleFrontEnd<S, Samples>;
+    using Base::shader_, Base::state_, Base::triangles;
+
+public:
+    TriangleCommand(const S& shader, const RenderState& state, std::span<const typename S::Vertex> vertices,
+                    std::span<const uint32_t> indices)
+        : Base(shader, state, vertices, indices) {
+        this->allows_hsr_ = PureShader<S> && !Blended && softraster::allows_hidden_surface_removal(state_);
+    }
+
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
-        const Rect rect = scissored(tile_rect, state_);
+        const Rect rect = this->scissored(tile_rect, state_);
         if (rect.empty()) return 0;
         const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), BlendSettings(state_), triangles(), *target.fb};
         const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
@@ -219,66 +244,32 @@ public:
         return 0;
     }
 
-private:
-    BinnedTriangles<N> triangles() const { return {std::span<const TriangleBin<N>>(bins_), post_.data()}; }
-
-    S shader_;
-    RenderState state_;
-    std::span<const Vertex> vertices_;
-    std::span<const uint32_t> indices_;
-    std::vector<ShadedVertex<N>> post_;
-    std::vector<TriangleBin<N>> bins_;
 };
 
 // A triangle draw in the general back end (general_back_end.h): the same front end, then
 // one fragment at a time with every per-fragment operation. Compiled once per shader.
 template <Shader S>
-class GeneralTriangleCommand final : public Command {
+class GeneralTriangleCommand final : public TriangleFrontEnd<S, kMaxSamples> {
+    // Binned by the 16-sample pattern's extent, which holds every pattern's (sample_pattern.h):
+    // a tile may get a triangle that covers none of its samples (rasterization finds none),
+    // never miss one; and binning, flattened in its AVX2 copy, is compiled for one more sample
+    // count instead of four.
+    using Base = TriangleFrontEnd<S, kMaxSamples>;
+    using Base::shader_, Base::state_, Base::triangles;
+
 public:
-    static constexpr int N = kVaryingCount<typename S::Varyings>;
-    using Vertex = typename S::Vertex;
-
-    GeneralTriangleCommand(const S& shader, const RenderState& state, int samples, std::span<const Vertex> vertices,
+    GeneralTriangleCommand(const S& shader, const RenderState& state, int samples, std::span<const typename S::Vertex> vertices,
                            std::span<const uint32_t> indices)
-        : shader_(shader), state_(state), ops_(state, samples, !PureShader<S>), vertices_(vertices), indices_(indices) {}
-
-    bool uses_stencil() const override { return state_.stencil_test; }
-    void prepare() override {
-        post_.resize(vertices_.size());
-        bins_.resize(primitive_chunks());
-    }
-    size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
-    void process_vertex_chunk(size_t c, const DrawTarget& target) override {
-        const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
-        phases::process_vertices(shader_, vertices_, begin, end, target, std::span<ShadedVertex<N>>(post_));
-    }
-    size_t primitive_chunks() const override { return (indices_.size() / 3 + kTriangleChunk - 1) / kTriangleChunk; }
-    void bin_primitive_chunk(size_t c, const DrawTarget& target) override {
-        const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
-        // Binned by the 16-sample pattern's extent, which holds every pattern's (sample_pattern.h):
-        // a tile may get a triangle that covers none of its samples (rasterization finds none),
-        // never miss one; and binning, flattened in its AVX2 copy, is compiled for one more sample
-        // count instead of four.
-        phases::bin_triangles<kMaxSamples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), target,
-                                           FaceState{state_.cull, state_.front_face}, bins_[c]);
-    }
-    void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
+        : Base(shader, state, vertices, indices), ops_(state, samples, !PureShader<S>) {}
 
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
-        const Rect rect = scissored(tile_rect, state_);
+        const Rect rect = this->scissored(tile_rect, state_);
         if (rect.empty()) return 0;
-        const BinnedTriangles<N> triangles{std::span<const TriangleBin<N>>(bins_), post_.data()};
-        return draw_tile_general(shader_, ops_, state_, triangles, *target.fb, target.grid.tile_x(tile), target.grid.tile_y(tile), rect);
+        return draw_tile_general(shader_, ops_, state_, triangles(), *target.fb, target.grid.tile_x(tile), target.grid.tile_y(tile), rect);
     }
 
 private:
-    S shader_;
-    RenderState state_;
     FragmentOps ops_;
-    std::vector<ShadedVertex<N>> post_;
-    std::span<const Vertex> vertices_;
-    std::span<const uint32_t> indices_;
-    std::vector<TriangleBin<N>> bins_;
 };
 
 // Lines and points: few and cheap, so the front end keeps them as one list (clipped and in
