@@ -11,6 +11,7 @@
 #include "io/read_file.h"
 #include "io/text_parse.h"
 #include "softraster/error.h"
+#include "softraster/framebuffer.h"
 #include "softraster/io/image_io.h"
 #include "softraster/scene/builtin_meshes.h"
 #include "softraster/scene/scene.h"
@@ -200,8 +201,7 @@ struct Loader {
         if (n.has("samples")) {
             s.samples = n["samples"].integer_in(1, 16);
             if (version < 2 && s.samples != 1 && s.samples != 4) n["samples"].fail("must be 1 or 4 (2, 8 and 16 need version 2)");
-            if (s.samples != 1 && s.samples != 2 && s.samples != 4 && s.samples != 8 && s.samples != 16)
-                n["samples"].fail("must be 1, 2, 4, 8 or 16");
+            if (!Framebuffer::valid_samples(s.samples)) n["samples"].fail("must be 1, 2, 4, 8 or 16");
         }
         samples = s.samples;
         if (n.has("supersample")) {

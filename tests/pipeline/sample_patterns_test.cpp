@@ -54,6 +54,16 @@ glm::dvec2 random_point(std::mt19937& rng) {
 
 ClipVertexIn vertex(glm::dvec2 p) { return {window_to_clip(float(p.x), float(p.y), W, H), 0}; }
 
+// A white triangle on black, drawn with n samples per pixel.
+Framebuffer white_triangle(int n, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    Framebuffer fb(W, H, n);
+    Context ctx(fb);
+    ctx.clear(glm::vec4(0, 0, 0, 1));
+    ctx.state.cull = CullMode::None;
+    draw(ctx, ConstantColorShader{glm::vec4(1)}, {vertex(a), vertex(b), vertex(c)}, {0, 1, 2});
+    return fb;
+}
+
 class SamplePatterns : public ::testing::TestWithParam<int> {};
 
 }  // namespace
@@ -64,11 +74,7 @@ TEST_P(SamplePatterns, EachSampleCoveredExactlyWhenInside) {
     int covered_total = 0;
     for (int trial = 0; trial < 150; ++trial) {
         const glm::dvec2 a = random_point(rng), b = random_point(rng), c = random_point(rng);
-        Framebuffer fb(W, H, n);
-        Context ctx(fb);
-        ctx.clear(glm::vec4(0, 0, 0, 1));
-        ctx.state.cull = CullMode::None;
-        draw(ctx, ConstantColorShader{glm::vec4(1)}, {vertex(a), vertex(b), vertex(c)}, {0, 1, 2});
+        const Framebuffer fb = white_triangle(n, a, b, c);
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x)
                 for (int s = 0; s < n; ++s) {
@@ -120,11 +126,7 @@ TEST_P(SamplePatterns, FlatSceneResolvesToCoverageFraction) {
     std::mt19937 rng(7 + unsigned(n));
     for (int trial = 0; trial < 30; ++trial) {
         const glm::dvec2 a = random_point(rng), b = random_point(rng), c = random_point(rng);
-        Framebuffer fb(W, H, n);
-        Context ctx(fb);
-        ctx.clear(glm::vec4(0, 0, 0, 1));
-        ctx.state.cull = CullMode::None;
-        draw(ctx, ConstantColorShader{glm::vec4(1)}, {vertex(a), vertex(b), vertex(c)}, {0, 1, 2});
+        const Framebuffer fb = white_triangle(n, a, b, c);
         const Image img = fb.read_pixels();
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x) {

@@ -114,9 +114,14 @@ void general_fragment(const S& shader, const FragmentOps& ops, Framebuffer& fb, 
     }
     if (!ops.blend.color_mask) return;
     Rgba8* c = fb.color_data() + base;
-    const Rgba8 q = quantize_rgba8(color);
+    if (ops.blend.replace) {  // quantized once for all samples, no blend arithmetic
+        const Rgba8 q = quantize_rgba8(color);
+        for (int s = 0; s < ops.samples; ++s)
+            if (pass & (1u << s)) c[s] = q;
+        return;
+    }
     for (int s = 0; s < ops.samples; ++s)
-        if (pass & (1u << s)) c[s] = ops.blend.replace ? q : blend(ops.blend, color, c[s]);
+        if (pass & (1u << s)) c[s] = blend(ops.blend, color, c[s]);
 }
 
 // Calls on_pixel(setup, pixel) for every covered pixel of the draw's triangles in tile
