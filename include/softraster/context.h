@@ -52,25 +52,21 @@ public:
 
     // Records a draw of `indices` (three per triangle, two per line, one per point).
     // Throws std::out_of_range for an index past the end of `vertices`.
+    // Lines and points are drawn as two triangles each (line_point_quads.h).
     template <Shader S>
     void draw(Topology topology, const S& shader, std::span<const typename S::Vertex> vertices,
               std::span<const uint32_t> indices) {
-        if (topology == Topology::Triangles) return draw_triangles(shader, vertices, indices);
-        validate_indices(indices, vertices.size(), topology);
-        commands_.push_back(std::make_unique<LinePointCommand<S>>(topology, shader, state, fb_->samples(), vertices, indices));
+        switch (topology) {
+            case Topology::Triangles: return record<Topology::Triangles>(shader, vertices, indices);
+            case Topology::Lines: return record<Topology::Lines>(shader, vertices, indices);
+            case Topology::Points: return record<Topology::Points>(shader, vertices, indices);
+        }
     }
     // The same for triangles only: a caller that draws nothing else compiles no line and
     // point code for its shaders.
     template <Shader S>
     void draw_triangles(const S& shader, std::span<const typename S::Vertex> vertices, std::span<const uint32_t> indices) {
-        validate_indices(indices, vertices.size(), Topology::Triangles);
-        if (needs_general_back_end(state, fb_->samples())) {
-            commands_.push_back(std::make_unique<GeneralTriangleCommand<S>>(shader, state, fb_->samples(), vertices, indices));
-            return;
-        }
-        dispatch_samples_blending(fb_->samples(), state.blend, [&]<int Samples, bool Blended>() {
-            commands_.push_back(std::make_unique<TriangleCommand<S, Samples, Blended>>(shader, state, vertices, indices));
-        });
+        record<Topology::Triangles>(shader, vertices, indices);
     }
 
     // Runs the recorded commands; they stay recorded, so execute() again draws the same
@@ -92,6 +88,17 @@ public:
     uint64_t fragments_shaded() const { return fragments_shaded_; }  // by the last execute()
 
 private:
+    template <Topology T, Shader S>
+    void record(const S& shader, std::span<const typename S::Vertex> vertices, std::span<const uint32_t> indices) {
+        validate_indices(indices, vertices.size(), T);
+        if (needs_general_back_end(state, fb_->samples())) {
+            commands_.push_back(std::make_unique<GeneralTriangleCommand<S, T>>(shader, state, fb_->samples(), vertices, indices));
+            return;
+        }
+        dispatch_samples_blending(fb_->samples(), state.blend, [&]<int Samples, bool Blended>() {
+            commands_.push_back(std::make_unique<TriangleCommand<S, Samples, Blended, T>>(shader, state, vertices, indices));
+        });
+    }
     void list_commands_by_tile(const TileGrid& grid);
 
     Framebuffer* fb_;

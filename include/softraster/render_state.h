@@ -53,6 +53,9 @@ struct StencilFace {
     StencilOp fail = StencilOp::Keep, depth_fail = StencilOp::Keep, pass = StencilOp::Keep;
 };
 
+// Which vertex of a primitive gives its flat varyings (glProvokingVertex).
+enum class ProvokingVertex { First, Last };
+
 // A rectangle of the picture in pixels, x right and y down from the top-left corner.
 struct ScissorRect {
     int x = 0, y = 0, width = 0, height = 0;
@@ -77,6 +80,9 @@ struct RenderState {
     float alpha_cutoff = 0.5f;
     bool alpha_to_coverage = false;     // with MSAA: alpha decides how many samples are covered
     bool noperspective = false;         // varyings interpolated linearly in window space (affine)
+    ProvokingVertex provoking_vertex = ProvokingVertex::Last;  // OpenGL's default
+    float line_width = 1.0f;            // pixels (line_point_quads.h)
+    float point_size = 1.0f;            // pixels
     bool scissor_test = false;
     ScissorRect scissor;
 };

@@ -102,11 +102,11 @@ void group_by_tile(TriangleBin<N>& bin) {
 // `Samples` samples per pixel: a triangle whose bounds hold no sample is dropped.
 template <int Samples, int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
-                   const Viewport& vp, FaceState faces, const TileGrid& grid, TriangleBin<N>& bin) {
+                   const Viewport& vp, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
     bin.pending.clear();
     bin.range = {};
-    assemble_triangles(indices, post, planes, vp, bin.clipped, [&](uint32_t ia, uint32_t ib, uint32_t ic) {
+    assemble_triangles(indices, post, planes, vp, flat, bin.clipped, [&](uint32_t ia, uint32_t ib, uint32_t ic) {
         const ShadedVertex<N>&a = bin.vertex(ia, post), &b = bin.vertex(ib, post), &c = bin.vertex(ic, post);
         const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
         if (!survives_culling(area2, faces)) return;

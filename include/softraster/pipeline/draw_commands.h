@@ -3,7 +3,8 @@
 //   1. vertex processing (vertex_processing.h), in chunks of vertices;
 //   2. primitive assembly, clipping, culling and binning (binning.h, bin_triangles), in
 //      chunks of primitives (a draw of one chunk of each does 1 and 2 as one item, see
-//      Context::execute);
+//      Context::execute); lines and points become two triangles each on the way
+//      (line_point_quads.h), so from here on every draw is of triangles;
 //   3. per tile, in draw order, the tile back end (tile_back_end.h): triangle setup,
 //      rasterization, depth test, fragment shading, output merge.
 // A command is a type-erased draw: one virtual call per chunk or per tile; everything per
@@ -21,7 +22,7 @@
 #include "softraster/pipeline/binning.h"
 #include "softraster/pipeline/general_back_end.h"
 #include "softraster/pipeline/hidden_surface_removal.h"
-#include "softraster/pipeline/line_rasterization.h"
+#include "softraster/pipeline/line_point_quads.h"
 #include "softraster/pipeline/tile_back_end.h"
 #include "softraster/pipeline/vertex_processing.h"
 
@@ -158,8 +159,15 @@ void process_vertices(const S& shader, std::span<const typename S::Vertex> verti
 }
 template <int Samples, int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const DrawTarget& target, FaceState faces,
-                   TriangleBin<N>& bin) {
-    simd::on_best_path([&]<bool>() { softraster::bin_triangles<Samples>(indices, post, target.planes, target.viewport, faces, target.grid, bin); });
+                   FlatVaryings flat, TriangleBin<N>& bin) {
+    simd::on_best_path([&]<bool>() {
+        softraster::bin_triangles<Samples>(indices, post, target.planes, target.viewport, faces, flat, target.grid, bin);
+    });
+}
+template <int Samples, int N>
+void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const DrawTarget& target,
+                      const LinePointShape& shape, FlatVaryings flat, TriangleBin<N>& bin) {
+    softraster::bin_lines_points<Samples>(topology, indices, post, target.viewport, shape, flat, target.grid, bin);
 }
 template <int Samples, int N>
 void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& state, Framebuffer& fb, int tx, int ty,
@@ -168,17 +176,23 @@ void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& sta
 }
 }  // namespace phases
 
-// The front end of a triangle draw, the same for both back ends: vertex processing and
-// binning in chunks (binned for the extent of BinSamples' sample pattern), then the
-// draw's triangles per tile.
-template <Shader S, int BinSamples>
+// The front end of a draw, the same for both back ends: vertex processing and binning in
+// chunks (binned for the extent of BinSamples' sample pattern), then the draw's triangles
+// per tile. Of lines or points (T), the triangles of their quads (line_point_quads.h).
+template <Shader S, int BinSamples, Topology T>
 class TriangleFrontEnd : public Command {
 public:
     static constexpr int N = kVaryingCount<typename S::Varyings>;
+    static constexpr size_t kPer = T == Topology::Triangles ? 3 : T == Topology::Lines ? 2 : 1;  // indices per primitive
     using Vertex = typename S::Vertex;
 
     TriangleFrontEnd(const S& shader, const RenderState& state, std::span<const Vertex> vertices, std::span<const uint32_t> indices)
-        : shader_(shader), state_(state), vertices_(vertices), indices_(indices) {}
+        : shader_(shader), state_(state), vertices_(vertices), indices_(indices) {
+        if constexpr (T != Topology::Triangles) {  // lines and points face front, no polygon offset
+            state_.cull = CullMode::None;
+            state_.polygon_offset_factor = state_.polygon_offset_units = 0.0f;
+        }
+    }
 
     bool uses_stencil() const override { return state_.stencil_test; }
     void prepare() override {
@@ -190,11 +204,17 @@ public:
         const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
         phases::process_vertices(shader_, vertices_, begin, end, target, std::span<ShadedVertex<N>>(post_));
     }
-    size_t primitive_chunks() const override { return (indices_.size() / 3 + kTriangleChunk - 1) / kTriangleChunk; }
+    size_t primitive_chunks() const override { return (indices_.size() / kPer + kTriangleChunk - 1) / kTriangleChunk; }
     void bin_primitive_chunk(size_t c, const DrawTarget& target) override {
-        const size_t tris = indices_.size() / 3, begin = c * kTriangleChunk, end = std::min(tris, begin + kTriangleChunk);
-        phases::bin_triangles<BinSamples>(indices_.subspan(begin * 3, (end - begin) * 3), post_.data(), target,
-                                          FaceState{state_.cull, state_.front_face}, bins_[c]);
+        const size_t count = indices_.size() / kPer, begin = c * kTriangleChunk, end = std::min(count, begin + kTriangleChunk);
+        const std::span<const uint32_t> chunk = indices_.subspan(begin * kPer, (end - begin) * kPer);
+        const FlatVaryings flat{kFlatVaryings<S>, state_.provoking_vertex == ProvokingVertex::First};
+        if constexpr (T == Topology::Triangles) {
+            phases::bin_triangles<BinSamples>(chunk, post_.data(), target, FaceState{state_.cull, state_.front_face}, flat, bins_[c]);
+        } else {
+            const LinePointShape shape{state_.line_width, state_.point_size, target.fb->samples() > 1, state_.front_face};
+            phases::bin_lines_points<BinSamples>(T, chunk, post_.data(), target, shape, flat, bins_[c]);
+        }
     }
     void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
 
@@ -209,9 +229,9 @@ protected:
     std::vector<TriangleBin<N>> bins_;
 };
 
-template <Shader S, int Samples, bool Blended>
-class TriangleCommand final : public TriangleFrontEnd<S, Samples> {
-    using Base = TriangleFrontEnd<S, Samples>;
+template <Shader S, int Samples, bool Blended, Topology T = Topology::Triangles>
+class TriangleCommand final : public TriangleFrontEnd<S, Samples, T> {
+    using Base = TriangleFrontEnd<S, Samples, T>;
     using Base::shader_, Base::state_, Base::triangles;
 
 public:
@@ -248,13 +268,13 @@ public:
 
 // A triangle draw in the general back end (general_back_end.h): the same front end, then
 // one fragment at a time with every per-fragment operation. Compiled once per shader.
-template <Shader S>
-class GeneralTriangleCommand final : public TriangleFrontEnd<S, kMaxSamples> {
+template <Shader S, Topology T = Topology::Triangles>
+class GeneralTriangleCommand final : public TriangleFrontEnd<S, kMaxSamples, T> {
     // Binned by the 16-sample pattern's extent, which holds every pattern's (sample_pattern.h):
     // a tile may get a triangle that covers none of its samples (rasterization finds none),
     // never miss one; and binning, flattened in its AVX2 copy, is compiled for one more sample
     // count instead of four.
-    using Base = TriangleFrontEnd<S, kMaxSamples>;
+    using Base = TriangleFrontEnd<S, kMaxSamples, T>;
     using Base::shader_, Base::state_, Base::triangles;
 
 public:
@@ -270,68 +290,6 @@ public:
 
 private:
     FragmentOps ops_;
-};
-
-// Lines and points: few and cheap, so the front end keeps them as one list (clipped and in
-// window space) and every tile walks all of them, drawing only its own pixels, through the
-// general back end's per-fragment stage (every sample of a pixel the primitive covers).
-template <Shader S>
-class LinePointCommand final : public Command {
-public:
-    static constexpr int N = kVaryingCount<typename S::Varyings>;
-    using Vertex = typename S::Vertex;
-
-    LinePointCommand(Topology topology, const S& shader, const RenderState& state, int samples, std::span<const Vertex> vertices,
-                     std::span<const uint32_t> indices)
-        : topology_(topology), shader_(shader), state_(state), ops_(state, samples, !PureShader<S>), vertices_(vertices),
-          indices_(indices) {}
-
-    bool uses_stencil() const override { return state_.stencil_test; }
-    size_t primitive_chunks() const override { return 1; }
-    void bin_primitive_chunk(size_t, const DrawTarget& target) override {
-        std::vector<ShadedVertex<N>> post(vertices_.size());
-        process_vertices(shader_, vertices_, 0, vertices_.size(), target.planes, target.viewport, std::span<ShadedVertex<N>>(post));
-        window_.clear();
-        assemble_lines_points(topology_, indices_, post.data(), target.viewport, window_);
-    }
-
-    uint64_t draw_tile(int, const Rect& tile_rect, const DrawTarget& target) override {
-        using V = typename S::Varyings;
-        const Rect rect = scissored(tile_rect, state_);
-        if (rect.empty()) return 0;
-        uint64_t shaded = 0;
-        const unsigned all = (1u << ops_.samples) - 1;
-        auto fragment = [&](int x, int y, float z, auto&& make_varyings) {
-            std::array<float, kMaxSamples> zs;
-            zs.fill(z);
-            general_fragment(shader_, ops_, *target.fb, x, y, all, zs.data(), z, true, make_varyings, shaded);
-        };
-        if (topology_ == Topology::Points) {
-            for (const WindowVertex<N>& p : window_)
-                rasterize_point(p, rect, [&](int x, int y, float z) { fragment(x, y, z, [&] { return from_array<V>(p.var); }); });
-            return shaded;
-        }
-        for (size_t i = 0; i + 1 < window_.size(); i += 2) {
-            const WindowVertex<N>&a = window_[i], &b = window_[i + 1];
-            rasterize_line(a, b, rect, [&](int x, int y, float z, float s) {
-                fragment(x, y, z, [&] {
-                    std::array<float, N> v;
-                    for (size_t k = 0; k < size_t(N); ++k) v[k] = a.var[k] + s * (b.var[k] - a.var[k]);
-                    return from_array<V>(v);
-                });
-            });
-        }
-        return shaded;
-    }
-
-private:
-    Topology topology_;
-    S shader_;
-    RenderState state_;
-    FragmentOps ops_;
-    std::span<const Vertex> vertices_;
-    std::span<const uint32_t> indices_;
-    std::vector<WindowVertex<N>> window_;
 };
 
 }  // namespace softraster

@@ -127,12 +127,12 @@ void general_fragment(const S& shader, const FragmentOps& ops, Framebuffer& fb, 
 // Calls on_pixel(setup, pixel) for every covered pixel of the draw's triangles in tile
 // (tx, ty) within `rect`, in draw order, for a framebuffer of `samples` samples. Compiled per
 // varying count, not per shader.
-template <int N>
+template <uint64_t Flat, int N>
 void rasterize_tile(int samples, const BinnedTriangles<N>& triangles, const RenderState& state, int tx, int ty, const Rect& rect,
                     FunctionRef<void(const TriangleSetup<N>&, const PixelSamples&)> on_pixel) {
     with_sample_count(samples, [&]<int Samples>() {
         PixelSamples out;
-        for_each_triangle_setup<Samples>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+        for_each_triangle_setup<Samples, true, Flat>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
             rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
                 out.x = px.x;
                 out.y = px.y;
@@ -156,9 +156,9 @@ uint64_t draw_tile_general(const S& shader, const FragmentOps& ops, const Render
     auto on_pixel = [&](const TriangleSetup<N>& t, const PixelSamples& px) {
         const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
         general_fragment(shader, ops, fb, px.x, px.y, px.mask, px.z.data(), interpolate_depth(t, i, j), t.front_facing,
-                         [&] { return from_array<V>(interpolate_perspective(t, i, j)); }, shaded);
+                         [&] { return from_array<V>(interpolate_perspective<kFlatVaryings<S>>(t, i, j)); }, shaded);
     };
-    rasterize_tile<N>(ops.samples, triangles, state, tx, ty, rect, on_pixel);
+    rasterize_tile<kFlatVaryings<S>, N>(ops.samples, triangles, state, tx, ty, rect, on_pixel);
     return shaded;
 }
 

@@ -17,11 +17,16 @@ inline T interpolate_depth(const TriangleSetup<N>& t, T i, T j) {
     return t.z.at(i, j);
 }
 
-template <int N, class T>
+// Flat: the shader's flat varyings (shader.h), whose planes hold the provoking vertex's
+// value (setup_planes) and are not interpolated.
+template <uint64_t Flat, int N, class T>
 inline std::array<T, N> interpolate_perspective(const TriangleSetup<N>& t, T i, T j) {
     const T w = 1.0f / t.inv_w.at(i, j);
     std::array<T, N> out;
-    for (size_t k = 0; k < size_t(N); ++k) out[k] = t.var_w[k].at(i, j) * w;
+    for (size_t k = 0; k < size_t(N); ++k) {
+        if ((Flat >> k) & 1) out[k] = t.var_w[k].at(i, j);  // a0 + 0 i + 0 j: exactly a0
+        else out[k] = t.var_w[k].at(i, j) * w;
+    }
     return out;
 }
 

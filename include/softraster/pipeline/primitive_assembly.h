@@ -42,13 +42,22 @@ const ShadedVertex<N>& corner_vertex(uint32_t i, const ShadedVertex<N>* post, co
     return (i & kClippedVertex) ? clipped[i & ~kClippedVertex] : post[i];
 }
 
+// A shader's flat varyings (shader.h, kFlatVaryings: bit k for float k) and which vertex of
+// a primitive provides them, the first or (OpenGL's default) the last.
+struct FlatVaryings {
+    uint64_t mask = 0;
+    bool first = false;
+};
+
 // Assembles the triangles of `indices` (three per triangle) in order and calls
 // emit(ia, ib, ic) with the corners of each that may be visible: as it is when it lies
 // inside every plane, else as the fan (0, k, k+1) of its clipped polygon, whose vertices are
-// appended to `clipped`. The clipper runs against `planes` (near, far, guard band).
+// appended to `clipped`. The clipper runs against `planes` (near, far, guard band). Every
+// vertex of a clipped polygon carries the flat varyings of the triangle's provoking vertex,
+// so each triangle of its fan has them whichever corner provokes.
 template <int N, class Emit>
 void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
-                        const Viewport& vp, std::vector<ShadedVertex<N>>& clipped, Emit&& emit) {
+                        const Viewport& vp, FlatVaryings flat, std::vector<ShadedVertex<N>>& clipped, Emit&& emit) {
     ClipPolygon<N> poly;
     for (size_t i = 0; i + 2 < indices.size(); i += 3) {
         const uint32_t ia = indices[i], ib = indices[i + 1], ic = indices[i + 2];
@@ -66,6 +75,9 @@ void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>
         for (int k = 0; k < n; ++k) {
             ShadedVertex<N> v;
             if (!finish_vertex(poly.v[size_t(k)], vp, v)) break;
+            const ShadedVertex<N>& provoking = flat.first ? a : c;
+            for (size_t j = 0; j < size_t(N); ++j)
+                if ((flat.mask >> j) & 1) v.clip.var[j] = provoking.clip.var[j];
             clipped.push_back(v);
             ++mapped;
         }

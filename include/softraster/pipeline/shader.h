@@ -9,6 +9,8 @@
 //   };                                                                   // false = discard
 #pragma once
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <concepts>
 #include <cstring>
 #include <type_traits>
@@ -49,6 +51,21 @@ inline V from_array(const VaryingArray<V>& a) {
     std::memcpy(&v, a.data(), sizeof(V));
     return v;
 }
+
+// Flat varyings (GLSL's `flat`): a shader may declare
+//     static constexpr uint64_t kFlat = varying_bits(offsetof(MyVaryings, color), sizeof(glm::vec3));
+// and those floats are not interpolated: every fragment of a primitive gets the values of
+// its provoking vertex (RenderState::provoking_vertex), as written by the vertex shader.
+constexpr uint64_t varying_bits(size_t byte_offset, size_t byte_size) {
+    uint64_t bits = 0;
+    for (size_t k = byte_offset / sizeof(float); k < (byte_offset + byte_size) / sizeof(float); ++k) bits |= uint64_t(1) << k;
+    return bits;
+}
+template <class S>
+inline constexpr uint64_t kFlatVaryings = [] {
+    if constexpr (requires { S::kFlat; }) return uint64_t(S::kFlat);
+    else return uint64_t(0);
+}();
 
 template <class S>
 concept Shader = VaryingStruct<typename S::Varyings> &&

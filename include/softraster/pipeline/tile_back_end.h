@@ -37,7 +37,7 @@ struct BinnedTriangles {
 // are `rect`, in draw order; the ordinal counts them (hidden_surface_removal.h names a
 // triangle by it). Without Planes, the setup has its coverage only (f makes the planes
 // when it needs them).
-template <int Samples, bool Planes = true, int N, class F>
+template <int Samples, bool Planes = true, uint64_t Flat = 0, int N, class F>
 void for_each_triangle_setup(const BinnedTriangles<N>& draw, const RenderState& state, int tx, int ty, const Rect& rect, F&& f) {
     TriangleSetup<N> setup;
     setup.options = PlaneOptions::of(state);
@@ -66,7 +66,7 @@ void for_each_triangle_setup(const BinnedTriangles<N>& draw, const RenderState& 
             const TriangleRef& r = refs[k];
             if (setup_coverage<Samples>(bin.vertex(r.v[0], draw.post), bin.vertex(r.v[1], draw.post),
                                         bin.vertex(r.v[2], draw.post), front, rect, setup)) {
-                if constexpr (Planes) setup_planes(setup);
+                if constexpr (Planes) setup_planes<Flat>(setup);
                 f(setup, ordinal);
             }
         }
@@ -76,6 +76,7 @@ void for_each_triangle_setup(const BinnedTriangles<N>& draw, const RenderState& 
 template <Shader S, int Samples, bool Blended, class DepthStencil = DepthTest>
 struct TileBackEnd {
     static constexpr int N = kVaryingCount<typename S::Varyings>;
+    static constexpr uint64_t Flat = kFlatVaryings<S>;
     using V = typename S::Varyings;
 
     // By value, not by reference: the tile loops read them after every framebuffer store,
@@ -117,11 +118,11 @@ struct TileBackEnd {
                 // sit among the tile loop's spilled registers.
                 static thread_local FragmentQueue<S, Samples> queue;
                 queue.start(shader, fb);
-                for_each_triangle_setup<Samples, /*Planes=*/false>(triangles, state, tx, ty, rect,
+                for_each_triangle_setup<Samples, /*Planes=*/false, Flat>(triangles, state, tx, ty, rect,
                                                                    [&](TriangleSetup<N>& setup, uint32_t) {
                     if (Samples == 1 && is_large(setup.bounds)) {
                         queue.flush();
-                        setup_planes(setup);
+                        setup_planes<Flat>(setup);
                         shaded += draw_groups(setup);
                     } else {
                         shaded += queue_triangle(setup, queue);  // makes the planes if needed
@@ -131,7 +132,7 @@ struct TileBackEnd {
                 return shaded;
             }
         }
-        for_each_triangle_setup<Samples>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+        for_each_triangle_setup<Samples, true, Flat>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
             if constexpr (Samples == 1 && BatchShader<S>) {
                 if (WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {  // EightPixelGroups
                     shaded += draw_groups(setup);
@@ -154,7 +155,7 @@ struct TileBackEnd {
             const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
             shade_fragment<Samples, Blended>(shader, depth, blend, fb, px.x, px.y, px.mask, px.z.data(),
                                        interpolate_depth(t, i, j), t.front_facing,
-                                       [&] { return from_array<V>(interpolate_perspective(t, i, j)); }, shaded);
+                                       [&] { return from_array<V>(interpolate_perspective<Flat>(t, i, j)); }, shaded);
         });
         return shaded;
     }
@@ -176,7 +177,7 @@ struct TileBackEnd {
                 if (!any(pass)) return;
                 shaded += unsigned(__builtin_popcount(bits(pass)));
                 if (!state.color_write) return;
-                shade_group<Blended>(shader, blend, color_row, x, width, pass, interpolate_perspective(t, i, j), z, t.front_facing);
+                shade_group<Blended>(shader, blend, color_row, x, width, pass, interpolate_perspective<Flat>(t, i, j), z, t.front_facing);
             });
         });
         return shaded;
@@ -192,14 +193,14 @@ struct TileBackEnd {
         // The triangle may come with its coverage only: its planes are made at its first
         // covered group, so a triangle that covers no sample costs only its edge functions.
         auto need_planes = [&] {
-            if (!t.has_planes) setup_planes(t);
+            if (!t.has_planes) setup_planes<Flat>(t);
         };
         // Queues the pixels of group [x, x + 8) of row y set in `pass`, writing `samples` of each.
         auto queue_group = [&](int y, int x, i8 pass, i8 samples) {
             const f8 i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
             queued += unsigned(__builtin_popcount(bits(pass)));
             const i8 pixel = (splat_i(int32_t(fb.sample_index(0, y))) + (kLaneIndex + x) * Samples);
-            queue.push(pass, interpolate_depth(t, i, j), interpolate_perspective(t, i, j), pixel, samples, t.front_facing);
+            queue.push(pass, interpolate_depth(t, i, j), interpolate_perspective<Flat>(t, i, j), pixel, samples, t.front_facing);
         };
         if constexpr (Samples == 1) {
             auto test_group = [&](int y, int x, i8 covered) {
@@ -246,7 +247,7 @@ struct TileBackEnd {
                 if (!pass) return;
                 const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
                 ++queued;
-                queue.push(interpolate_depth(t, i, j), interpolate_perspective(t, i, j), int32_t(base), pass, t.front_facing);
+                queue.push(interpolate_depth(t, i, j), interpolate_perspective<Flat>(t, i, j), int32_t(base), pass, t.front_facing);
             });
         }
         return queued;

@@ -61,7 +61,10 @@ struct DepthPlane {
 struct PlaneOptions {
     float offset_factor = 0.0f, offset_units = 0.0f;
     bool noperspective = false;
-    static PlaneOptions of(const RenderState& st) { return {st.polygon_offset_factor, st.polygon_offset_units, st.noperspective}; }
+    bool provoking_first = false;  // flat varyings come from the first corner, not the last
+    static PlaneOptions of(const RenderState& st) {
+        return {st.polygon_offset_factor, st.polygon_offset_units, st.noperspective, st.provoking_vertex == ProvokingVertex::First};
+    }
 };
 
 template <int N>
@@ -72,6 +75,7 @@ struct TriangleSetup {
     int origin_x = 0, origin_y = 0;  // the pixel the planes are relative to
     bool front_facing = true;
     std::array<const ShadedVertex<N>*, 3> corner{};  // clockwise on screen
+    const ShadedVertex<N>* provoking = nullptr;     // the corner flat varyings come from
     // Interpolation planes, made by setup_planes. A draw may make them only once the triangle
     // is known to cover a sample: in a million-triangle mesh many triangles cover none.
     bool has_planes = false;
@@ -97,6 +101,7 @@ bool setup_coverage(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const 
     const int64_t area2 = signed_area2(v0.X, v0.Y, v1.X, v1.Y, v2.X, v2.Y);
     t.front_facing = is_front_facing(/*ccw_on_screen=*/area2 < 0, front);
     t.corner = {&v0, &v1, &v2};
+    t.provoking = t.options.provoking_first ? &v0 : &v2;
     if (area2 < 0) std::swap(t.corner[1], t.corner[2]);  // make it clockwise on screen, so that E >= 0 inside
     t.origin_x = rect.x0;
     t.origin_y = rect.y0;
@@ -115,8 +120,9 @@ bool setup_coverage(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const 
     return true;
 }
 
-// Makes the interpolation planes of a triangle whose coverage is set up.
-template <int N>
+// Makes the interpolation planes of a triangle whose coverage is set up. Flat: the shader's
+// flat varyings (shader.h), whose planes are the provoking vertex's value, constant.
+template <uint64_t Flat = 0, int N>
 void setup_planes(TriangleSetup<N>& t) {
     // Plane gradients by Cramer's rule on the two edge vectors from vertex 0, in double,
     // then each plane's value at the center of the rectangle's first pixel.
@@ -159,6 +165,8 @@ void setup_planes(TriangleSetup<N>& t) {
         for (size_t k = 0; k < size_t(N); ++k)
             t.var_w[k] = plane(double(v0.clip.var[k]) * w0.inv_w, double(v1.clip.var[k]) * w1.inv_w, double(v2.clip.var[k]) * w2.inv_w);
     }
+    for (size_t k = 0; k < size_t(N); ++k)
+        if ((Flat >> k) & 1) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
     t.has_planes = true;
 }
 
