@@ -26,6 +26,8 @@ struct ObjReader {
     std::vector<glm::vec2> uvs;
     std::vector<glm::vec3> normals;
     std::vector<std::array<Corner, 3>> triangles;
+    std::vector<Corner> lines;   // two per segment
+    std::vector<Corner> points;
 
     [[noreturn]] void fail(const std::string& what) const {
         throw InputError(name + ":" + std::to_string(line_no) + ": " + what);
@@ -68,6 +70,13 @@ struct ObjReader {
         return c;
     }
 
+    // A corner of a line or point: v or v/vt (no normals).
+    Corner element_corner(std::string_view tok) const {
+        const Corner c = corner(tok);
+        if (c.n >= 0) fail("a line or point corner has no normal ('" + std::string(tok) + "')");
+        return c;
+    }
+
     void statement(const std::vector<std::string_view>& tok) {
         const std::string_view kw = tok[0];
         const size_t args = tok.size() - 1;
@@ -99,7 +108,16 @@ struct ObjReader {
                 triangles.push_back({first, prev, cur});
                 prev = cur;
             }
-        } else if (kw == "g" || kw == "o" || kw == "s" || kw == "mtllib" || kw == "usemtl" || kw == "l" || kw == "p" ||
+        } else if (kw == "l") {  // a polyline: v1 v2 ... as segments (v1, v2), (v2, v3), ...
+            if (args < 2) fail("line needs at least 2 vertices, got " + std::to_string(args));
+            for (size_t i = 1; i + 1 < tok.size(); ++i) {
+                lines.push_back(element_corner(tok[i]));
+                lines.push_back(element_corner(tok[i + 1]));
+            }
+        } else if (kw == "p") {
+            if (args < 1) fail("point needs at least 1 vertex");
+            for (size_t i = 1; i < tok.size(); ++i) points.push_back(element_corner(tok[i]));
+        } else if (kw == "g" || kw == "o" || kw == "s" || kw == "mtllib" || kw == "usemtl" ||
                    kw == "vp" || kw == "mg" || kw == "lod" || kw == "maplib" || kw == "usemap" || kw == "shadow_obj" ||
                    kw == "trace_obj" || kw == "bevel" || kw == "c_interp" || kw == "d_interp" || kw == "cstype" ||
                    kw == "deg" || kw == "bmat" || kw == "step" || kw == "curv" || kw == "curv2" || kw == "surf" ||
@@ -113,15 +131,18 @@ struct ObjReader {
 
     Mesh build() {
         // Check indices against the final counts (OBJ allows forward references).
+        auto check = [&](const Corner& c) {
+            if (c.v >= int64_t(positions.size()))
+                throw InputError(name + ": vertex index " + std::to_string(c.v + 1) + " out of range (" + std::to_string(positions.size()) + " vertices)");
+            if (c.t >= int64_t(uvs.size()))
+                throw InputError(name + ": texture coordinate index " + std::to_string(c.t + 1) + " out of range (" + std::to_string(uvs.size()) + " defined)");
+            if (c.n >= int64_t(normals.size()))
+                throw InputError(name + ": normal index " + std::to_string(c.n + 1) + " out of range (" + std::to_string(normals.size()) + " defined)");
+        };
         for (const auto& tri : triangles)
-            for (const Corner& c : tri) {
-                if (c.v >= int64_t(positions.size()))
-                    throw InputError(name + ": vertex index " + std::to_string(c.v + 1) + " out of range (" + std::to_string(positions.size()) + " vertices)");
-                if (c.t >= int64_t(uvs.size()))
-                    throw InputError(name + ": texture coordinate index " + std::to_string(c.t + 1) + " out of range (" + std::to_string(uvs.size()) + " defined)");
-                if (c.n >= int64_t(normals.size()))
-                    throw InputError(name + ": normal index " + std::to_string(c.n + 1) + " out of range (" + std::to_string(normals.size()) + " defined)");
-            }
+            for (const Corner& c : tri) check(c);
+        for (const Corner& c : lines) check(c);
+        for (const Corner& c : points) check(c);
         Mesh mesh;
         std::map<Corner, uint32_t> cache;  // each distinct (v, vt, vn) becomes one vertex
         auto make = [&](const Corner& c) {
@@ -132,17 +153,20 @@ struct ObjReader {
             v.color = colors[size_t(c.v)];
             return v;
         };
+        auto vertex = [&](const Corner& c) {
+            auto [it, inserted] = cache.try_emplace(c, uint32_t(mesh.vertices.size()));
+            if (inserted) mesh.vertices.push_back(make(c));
+            return it->second;
+        };
         for (const auto& tri : triangles) {
             if (tri[0].n < 0 || tri[1].n < 0 || tri[2].n < 0) {
                 mesh.add_face_normal_triangle(make(tri[0]), make(tri[1]), make(tri[2]));
                 continue;
             }
-            for (const Corner& c : tri) {
-                auto [it, inserted] = cache.try_emplace(c, uint32_t(mesh.vertices.size()));
-                if (inserted) mesh.vertices.push_back(make(c));
-                mesh.indices.push_back(it->second);
-            }
+            for (const Corner& c : tri) mesh.indices.push_back(vertex(c));
         }
+        for (const Corner& c : lines) mesh.lines.push_back(vertex(c));
+        for (const Corner& c : points) mesh.points.push_back(vertex(c));
         return mesh;
     }
 };

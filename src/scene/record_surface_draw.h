@@ -12,13 +12,17 @@
 namespace softraster {
 
 // The shader specialized for the model, the texture and the vertex colors: what it does
-// not need is neither computed nor interpolated.
+// not need is neither computed nor interpolated. Lines and points are drawn unlit only, so
+// only that model's file compiles their front end.
 template <Shading M>
 void record_surface_draw(Context& ctx, const SceneRenderer::Draw& d) {
     const std::span<const MeshVertex> vertices(d.mesh->vertices);
-    const std::span<const uint32_t> indices(d.mesh->indices);
     auto draw = [&]<bool Textured, bool Colored>() {
-        ctx.draw_triangles(SurfaceShader<M, Textured, Colored>{&d.uniforms}, vertices, indices);
+        const SurfaceShader<M, Textured, Colored> shader{&d.uniforms};
+        if constexpr (M == Shading::Unlit) {
+            if (d.primitive != Topology::Triangles) return ctx.draw(d.primitive, shader, vertices, *d.line_point_indices);
+        }
+        ctx.draw_triangles(shader, vertices, std::span<const uint32_t>(d.mesh->indices));
     };
     if constexpr (M == Shading::Normals || M == Shading::Depth) {
         draw.template operator()<false, false>();

@@ -359,7 +359,8 @@ struct Loader {
     }
 
     SceneObject read_object(const Node& n) {
-        n.expect_object({"mesh", "builtin", "transform", "material", "cull", "front_face"}, {"depth", "stencil", "scissor"}, version);
+        n.expect_object({"mesh", "builtin", "transform", "material", "cull", "front_face"},
+                        {"depth", "stencil", "scissor", "primitive", "line_width", "point_size", "wireframe"}, version);
         SceneObject o;
         if (n.has("mesh") == n.has("builtin")) n.fail("exactly one of 'mesh' and 'builtin' is required");
         glm::vec3 translate(0.0f), rotate(0.0f), scale(1.0f);
@@ -386,6 +387,19 @@ struct Loader {
             if (r.array_size() != 4) r.fail("expected [x, y, width, height]");
             o.state.scissor = ScissorRect{r.at(0).integer_in(0, 16384), r.at(1).integer_in(0, 16384), r.at(2).integer_in(0, 16384),
                                           r.at(3).integer_in(0, 16384)};
+        }
+        if (n.has("primitive"))
+            o.primitive = n["primitive"].choice<Topology>({{"triangles", Topology::Triangles}, {"lines", Topology::Lines}, {"points", Topology::Points}});
+        if (n.has("line_width")) o.line_width = float(n["line_width"].number_in(1, 255, false, false, "1..255"));
+        if (n.has("point_size")) o.point_size = float(n["point_size"].number_in(1, 255, false, false, "1..255"));
+        if (n.has("wireframe")) {
+            const Node w = n["wireframe"];
+            if (o.primitive != Topology::Triangles) w.fail("a wireframe needs primitive 'triangles'");
+            w.expect_object({"color", "width"});
+            Wireframe wire;
+            if (w.has("color")) wire.color = w["color"].vec3();
+            if (w.has("width")) wire.width = float(w["width"].number_in(1, 255, false, false, "1..255"));
+            o.wireframe = wire;
         }
         if (n.has("builtin")) {
             o.mesh = read_builtin(n["builtin"]);

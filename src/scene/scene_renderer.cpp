@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -40,11 +41,11 @@ std::shared_ptr<Mesh> world_face_normal_mesh(const Mesh& mesh, const glm::mat4& 
 }
 
 // View-space depth (negative z: larger is nearer) of the center of the object-space bounding
-// box of all triangle corners: the key blended objects are sorted by.
-float view_depth_of_bounds_center(const Mesh& mesh, const glm::mat4& model_view) {
+// box of the vertices `indices` draws: the key blended objects are sorted by.
+float view_depth_of_bounds_center(const Mesh& mesh, const std::vector<uint32_t>& indices, const glm::mat4& model_view) {
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
     bool any = false;
-    for (uint32_t i : mesh.indices) {
+    for (uint32_t i : indices) {
         const glm::vec3 p = mesh.vertices[i].position;
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
         lo = glm::min(lo, p);
@@ -94,7 +95,29 @@ RenderState render_state(const SceneObject& o, int supersample) {
     st.alpha_cutoff = m.alpha_cutoff.value_or(0.5f);
     st.alpha_to_coverage = m.alpha_to_coverage;
     st.noperspective = m.affine;
+    st.line_width = o.line_width;
+    st.point_size = o.point_size;
     return st;
+}
+
+// The draw of an object's wireframe: its triangles' edges, unlit in one color, opaque, with
+// the object's depth, stencil, scissor and color mask. (The object itself is drawn pushed
+// back by polygon offset, so the edges win the depth test against it.)
+SceneRenderer::Draw wireframe_draw(const SceneRenderer::Draw& object, const Wireframe& wire) {
+    SceneRenderer::Draw d;
+    d.mesh = object.mesh;
+    d.primitive = Topology::Lines;
+    d.line_point_indices = std::make_shared<const std::vector<uint32_t>>(triangle_edges(*object.mesh));
+    d.uniforms = object.uniforms;
+    d.uniforms.color = glm::vec4(wire.color, 1.0f);
+    d.uniforms.texture = nullptr;
+    d.shading = Shading::Unlit;
+    d.colored = false;
+    d.state = object.state;
+    d.state.blend = BlendMode::Opaque;
+    d.state.alpha_test = d.state.alpha_to_coverage = d.state.noperspective = false;
+    d.state.line_width = wire.width;
+    return d;
 }
 
 bool has_vertex_colors(const Mesh& mesh) {
@@ -129,7 +152,11 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     };
     std::vector<Keyed> opaque, blended;
     for (const SceneObject& o : scene.objects) {
-        Draw d{o.mesh.get(), nullptr, {}, {}, o.material.shading, has_vertex_colors(*o.mesh)};
+        Draw d{o.mesh.get(), nullptr, o.primitive, nullptr, {}, {}, o.material.shading, has_vertex_colors(*o.mesh)};
+        if (o.primitive != Topology::Triangles) {
+            d.line_point_indices = std::make_shared<const std::vector<uint32_t>>(primitive_indices(*o.mesh, o.primitive));
+            d.shading = Shading::Unlit;
+        }
         SurfaceUniforms& u = d.uniforms;
         u.mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
         u.model = o.model;
@@ -143,7 +170,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         u.texture = o.material.texture.get();
         u.filter = o.material.filter;
         u.wrap = o.material.wrap;
-        if (o.material.shading == Shading::Flat) {
+        if (d.shading == Shading::Flat) {
             d.flat_mesh = world_face_normal_mesh(*o.mesh, o.model);
             d.mesh = d.flat_mesh.get();
             u.normal_matrix = glm::mat3(1.0f);
@@ -151,8 +178,20 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         const bool is_blended = o.material.blend != BlendMode::Opaque;
         d.state = render_state(o, scene.supersample);
         d.state.depth_write = o.state.depth_write.value_or(!is_blended);  // blended objects test but do not write
-        const float depth = is_blended ? view_depth_of_bounds_center(*o.mesh, view * o.model) : 0.0f;
-        (is_blended ? blended : opaque).push_back({std::move(d), depth, size_t(&o - scene.objects.data())});
+        const float depth =
+            is_blended ? view_depth_of_bounds_center(*o.mesh, d.line_point_indices ? *d.line_point_indices : o.mesh->indices, view * o.model)
+                       : 0.0f;
+        const size_t index = size_t(&o - scene.objects.data());
+        std::optional<Draw> wire;
+        if (o.wireframe) {
+            wire = wireframe_draw(d, *o.wireframe);
+            wire->state.depth_write = o.state.depth_write.value_or(true);
+            d.state.polygon_offset_factor += 1.0f;
+            d.state.polygon_offset_units += 1.0f;
+        }
+        auto& list = is_blended ? blended : opaque;
+        list.push_back({std::move(d), depth, index});
+        if (wire) list.push_back({std::move(*wire), depth, index});  // right after its object, whatever the order
     }
     // Opaque first in file order; then blended, farthest (most negative view z) first,
     // ties in file order. Or all in file order (version 2, draw_order "file").
@@ -170,7 +209,8 @@ SceneRenderer::~SceneRenderer() = default;
 
 size_t SceneRenderer::triangle_count() const {
     size_t n = 0;
-    for (const Draw& d : draws_) n += d.mesh->triangle_count();
+    for (const Draw& d : draws_)
+        if (d.primitive == Topology::Triangles) n += d.mesh->triangle_count();
     return n;
 }
 

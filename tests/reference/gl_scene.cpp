@@ -187,6 +187,10 @@ GLenum gl_factor(softraster::BlendFactor f) {
 }  // namespace
 
 struct GlScene::Draw {
+    GLenum mode = GL_TRIANGLES;
+    bool wire = false;          // an object's wireframe
+    float extra_offset = 0.0f;  // added to the polygon offset (under a wireframe)
+    glm::vec4 color{1.0f};
     GLuint program = 0;
     GLuint vao = 0, vbo = 0, ibo = 0, texture = 0;
     GLsizei index_count = 0;
@@ -203,65 +207,80 @@ struct GlScene::Draw {
     }
 };
 
+namespace {
+// Uploads `mesh` and the primitives of `indices` (`per` indices each) whose vertices are all
+// finite (GL leaves the others undefined). Without vertex colors: a constant white.
+void upload(GlScene::Draw& d, const softraster::Mesh& mesh, const std::vector<uint32_t>& indices, size_t per, bool vertex_colors) {
+    glGenVertexArrays(1, &d.vao);
+    glBindVertexArray(d.vao);
+    glGenBuffers(1, &d.vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, d.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(softraster::MeshVertex)), mesh.vertices.data(), GL_STATIC_DRAW);
+    const GLsizei stride = sizeof(softraster::MeshVertex);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, position)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, normal)));
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, uv)));
+    glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, color)));
+    for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
+    if (vertex_colors) glEnableVertexAttribArray(3);
+    else glVertexAttrib4f(3, 1.0f, 1.0f, 1.0f, 1.0f);
+    std::vector<uint32_t> idx;
+    for (size_t i = 0; i + per <= indices.size(); i += per) {
+        bool finite = true;
+        for (size_t k = 0; k < per; ++k) {
+            const glm::vec3 p = mesh.vertices[indices[i + k]].position;
+            finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+        }
+        if (finite) idx.insert(idx.end(), indices.begin() + long(i), indices.begin() + long(i + per));
+    }
+    glGenBuffers(1, &d.ibo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * 4), idx.data(), GL_STATIC_DRAW);
+    d.index_count = GLsizei(idx.size());
+}
+}  // namespace
+
 GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
 
     const glm::mat4 view = softraster::view_matrix(scene.camera);
     const glm::mat4 proj = softraster::projection_matrix(scene.camera, scene.width, scene.height);
     std::map<const softraster::Texture*, GLuint> textures;
+    auto program = [&](int shading, bool textured, int lights, bool cutoff, bool affine) {
+        const int key = ((shading * 2 + int(textured)) * 2 + int(cutoff)) * 2 + int(affine);
+        GLuint& p = programs_[key];
+        if (!p) p = link_program(shading, textured, lights, cutoff, affine);
+        return p;
+    };
     for (const softraster::SceneObject& o : scene.objects) {
         auto d = std::make_unique<Draw>();
         d->object = &o;
+        // Lines and points are drawn unlit (the spec), as the wireframe.
+        const int shading = o.primitive == softraster::Topology::Triangles ? int(o.material.shading) : int(Shading::Unlit);
+        d->mode = o.primitive == softraster::Topology::Triangles ? GL_TRIANGLES : o.primitive == softraster::Topology::Lines ? GL_LINES : GL_POINTS;
+        d->color = o.material.color;
         const bool cutoff = o.material.alpha_cutoff.has_value();
-        const int key = ((int(o.material.shading) * 2 + (o.material.texture ? 1 : 0)) * 2 + int(cutoff)) * 2 + int(o.material.affine);
-        GLuint& program = programs_[key];
-        if (!program)
-            program = link_program(int(o.material.shading), o.material.texture != nullptr, int(scene.lights.directional.size()), cutoff,
-                                   o.material.affine);
-        d->program = program;
+        d->program = program(shading, o.material.texture != nullptr, int(scene.lights.directional.size()), cutoff, o.material.affine);
         d->model = o.model;
         d->mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
         d->normal_matrix = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(o.model)))));
         softraster::Mesh flat;
         const softraster::Mesh* mesh = o.mesh.get();
-        if (o.material.shading == Shading::Flat) {
+        if (shading == int(Shading::Flat)) {
             flat = flat_mesh(*mesh, o.model);
             mesh = &flat;
             d->normal_matrix = glm::mat3(1.0f);
         }
+        const std::vector<uint32_t> indices = softraster::primitive_indices(*mesh, o.primitive);
         // Blended objects: sort key is the view depth of the object-space bounding box center.
         d->blended = o.material.blend != softraster::BlendMode::Opaque;
         glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-        for (uint32_t i : o.mesh->indices) {
-            const glm::vec3 p = o.mesh->vertices[i].position;
+        for (uint32_t i : indices) {
+            const glm::vec3 p = mesh->vertices[i].position;
             if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) lo = glm::min(lo, p), hi = glm::max(hi, p);
         }
         d->view_depth = lo.x <= hi.x ? (view * o.model * glm::vec4(0.5f * (lo + hi), 1.0f)).z : 0.0f;
-
-        glGenVertexArrays(1, &d->vao);
-        glBindVertexArray(d->vao);
-        glGenBuffers(1, &d->vbo);
-        glBindBuffer(GL_ARRAY_BUFFER, d->vbo);
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh->vertices.size() * sizeof(softraster::MeshVertex)), mesh->vertices.data(), GL_STATIC_DRAW);
-        const GLsizei stride = sizeof(softraster::MeshVertex);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, position)));
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, normal)));
-        glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, uv)));
-        glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, color)));
-        for (GLuint a = 0; a < 4; ++a) glEnableVertexAttribArray(a);
-        // Triangles with a non-finite corner are not drawn (GL leaves them undefined).
-        std::vector<uint32_t> idx;
-        for (size_t i = 0; i + 2 < mesh->indices.size(); i += 3) {
-            bool finite = true;
-            for (int k = 0; k < 3; ++k) {
-                const glm::vec3 p = mesh->vertices[mesh->indices[i + size_t(k)]].position;
-                finite = finite && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-            }
-            if (finite) idx.insert(idx.end(), mesh->indices.begin() + long(i), mesh->indices.begin() + long(i) + 3);
-        }
-        glGenBuffers(1, &d->ibo);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d->ibo);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * 4), idx.data(), GL_STATIC_DRAW);
-        d->index_count = GLsizei(idx.size());
+        upload(*d, *mesh, indices, o.primitive == softraster::Topology::Triangles ? 3 : o.primitive == softraster::Topology::Lines ? 2 : 1,
+               /*vertex_colors=*/true);
 
         if (const softraster::Texture* t = o.material.texture.get()) {
             GLuint& tex = textures[t];
@@ -281,7 +300,24 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
             }
             d->texture = tex;
         }
+        // A wireframe: the triangles pushed back by glPolygonOffset(+1, +1), then their edges
+        // as lines in one color, without vertex colors, opaque.
+        std::unique_ptr<Draw> wire;
+        if (o.wireframe) {
+            d->extra_offset = 1.0f;
+            wire = std::make_unique<Draw>();
+            wire->object = &o;
+            wire->wire = true;
+            wire->mode = GL_LINES;
+            wire->color = glm::vec4(o.wireframe->color, 1.0f);
+            wire->program = program(int(Shading::Unlit), false, int(scene.lights.directional.size()), false, false);
+            wire->mvp = d->mvp;
+            wire->blended = d->blended;
+            wire->view_depth = d->view_depth;
+            upload(*wire, *mesh, softraster::triangle_edges(*mesh), 2, /*vertex_colors=*/false);
+        }
         draws_.push_back(std::move(d));
+        if (wire) draws_.push_back(std::move(wire));
     }
     // Opaque first in file order, then blended farthest first (stable: ties keep file order).
     // (Version 2's draw_order "file": all in file order.)
@@ -327,10 +363,10 @@ void GlScene::draw_frame() const {
         glUniformMatrix4fv(loc("u_mvp"), 1, GL_FALSE, glm::value_ptr(d->mvp));
         glUniformMatrix4fv(loc("u_model"), 1, GL_FALSE, glm::value_ptr(d->model));
         glUniformMatrix3fv(loc("u_normal_matrix"), 1, GL_FALSE, glm::value_ptr(d->normal_matrix));
-        glUniform4fv(loc("u_color"), 1, glm::value_ptr(m.color));
+        glUniform4fv(loc("u_color"), 1, glm::value_ptr(d->color));
         glUniform3fv(loc("u_specular"), 1, glm::value_ptr(m.specular));
         glUniform1f(loc("u_shininess"), m.shininess);
-        if (d->texture) {
+        if (d->texture && !d->wire) {
             glBindTexture(GL_TEXTURE_2D, d->texture);
             const GLint filter = m.filter == softraster::Filter::Nearest ? GL_NEAREST : GL_LINEAR;
             const GLint wrap = m.wrap == softraster::Wrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
@@ -349,12 +385,15 @@ void GlScene::draw_frame() const {
         glFrontFace(o.front_face == softraster::FrontFace::CCW ? GL_CW : GL_CCW);
         glUniform1f(loc("u_alpha_cutoff"), m.alpha_cutoff.value_or(0.0f));
         const softraster::ObjectState& st = o.state;
-        const bool blended = m.blend != softraster::BlendMode::Opaque;
+        const bool blended = m.blend != softraster::BlendMode::Opaque && !d->wire;
         set_enabled(GL_DEPTH_TEST, st.depth_test);
         glDepthFunc(gl_compare(st.depth_func));
         glDepthMask(st.depth_write.value_or(!blended) ? GL_TRUE : GL_FALSE);  // blended objects do not write by default
-        set_enabled(GL_POLYGON_OFFSET_FILL, st.offset_factor != 0.0f || st.offset_units != 0.0f);
-        glPolygonOffset(st.offset_factor, st.offset_units);
+        const float factor = st.offset_factor + d->extra_offset, units = st.offset_units + d->extra_offset;
+        set_enabled(GL_POLYGON_OFFSET_FILL, factor != 0.0f || units != 0.0f);
+        glPolygonOffset(factor, units);
+        glLineWidth(d->wire ? o.wireframe->width : o.line_width);
+        glPointSize(o.point_size);
         set_enabled(GL_STENCIL_TEST, st.stencil_test);
         for (const auto& [face, f] : {std::pair{GLenum(GL_FRONT), st.stencil_front}, std::pair{GLenum(GL_BACK), st.stencil_back}}) {
             glStencilFuncSeparate(face, gl_compare(f.func), f.ref, f.read_mask);
@@ -367,7 +406,7 @@ void GlScene::draw_frame() const {
             glScissor(st.scissor->x * k, st.scissor->y * k, st.scissor->width * k, st.scissor->height * k);
         }
         glColorMask(m.color_mask & 1, (m.color_mask >> 1) & 1, (m.color_mask >> 2) & 1, (m.color_mask >> 3) & 1);
-        set_enabled(GL_SAMPLE_ALPHA_TO_COVERAGE, m.alpha_to_coverage);
+        set_enabled(GL_SAMPLE_ALPHA_TO_COVERAGE, m.alpha_to_coverage && !d->wire);
         set_enabled(GL_BLEND, blended);
         const softraster::BlendEquationState b =
             m.blend == softraster::BlendMode::Custom ? m.blend_equation : softraster::blend_preset(m.blend);
@@ -375,7 +414,7 @@ void GlScene::draw_frame() const {
         glBlendFuncSeparate(gl_factor(b.src_rgb), gl_factor(b.dst_rgb), gl_factor(b.src_alpha), gl_factor(b.dst_alpha));
         glBlendColor(b.constant.r, b.constant.g, b.constant.b, b.constant.a);
         glBindVertexArray(d->vao);
-        glDrawElements(GL_TRIANGLES, d->index_count, GL_UNSIGNED_INT, nullptr);
+        glDrawElements(d->mode, d->index_count, GL_UNSIGNED_INT, nullptr);
     }
     glDepthMask(GL_TRUE);
     glStencilMask(0xff);

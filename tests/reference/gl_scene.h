@@ -21,8 +21,9 @@ public:
     // Clear and every draw, in the spec's order; the caller resolves and reads back.
     void draw_frame() const;
 
-private:
     struct Draw;
+
+private:
     const softraster::Scene& scene_;
     std::map<int, GLuint> programs_;  // by shading model and texture
     std::vector<std::unique_ptr<Draw>> draws_;

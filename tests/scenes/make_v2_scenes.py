@@ -248,3 +248,73 @@ scene("draw_order_file", [
     quad([0, 0, 0.5], size=1.2, color=[0.9, 0.2, 0.2, 0.5], blend="alpha"),
     quad([0.4, 0.3, -0.5], size=1.2, color=[0.2, 0.4, 0.9, 0.5], blend="alpha"),
 ], draw_order="file")
+
+# ---- lines and points (OBJ `l` and `p` elements, triangle edges, wireframes)
+import math
+star = ["# A star of segments at generic angles and lengths, polylines, vertex colors."]
+lines = []
+n = 1
+for i in range(28):
+    a = 2 * math.pi * i / 28 + 0.037
+    r0, r1 = 0.08 + 0.013 * (i % 5), 0.55 + 0.31 * ((i * 7) % 11) / 11
+    c0 = (0.5 + 0.5 * math.cos(a), 0.5 + 0.5 * math.sin(a), 0.3)
+    star.append("v %.5f %.5f 0 %.3f %.3f %.3f" % (r0 * math.cos(a) - 0.55, r0 * math.sin(a) + 0.05, *c0))
+    star.append("v %.5f %.5f 0 %.3f %.3f %.3f" % (r1 * math.cos(a) - 0.55, r1 * math.sin(a) + 0.05, 1, 1 - c0[0], c0[1]))
+    lines.append("l %d %d" % (n, n + 1))
+    n += 2
+# a polyline (a spiral) and an axis-aligned box
+first = n
+for k in range(40):
+    a, r = 0.45 * k, 0.1 + 0.018 * k
+    star.append("v %.5f %.5f 0 %.3f 0.9 %.3f" % (0.75 + r * math.cos(a), 0.1 + r * math.sin(a), k / 40, 1 - k / 40))
+    n += 1
+lines.append("l " + " ".join(str(k) for k in range(first, n)))
+for x, y in [(-1.2, -0.8), (1.25, -0.8), (1.25, 0.83), (-1.2, 0.83)]:
+    star.append("v %.3f %.3f 0 1 1 1" % (x, y))
+lines.append("l %d %d %d %d %d" % (n, n + 1, n + 2, n + 3, n))
+write('meshes/lines_star.obj', "\n".join(star + lines) + "\n")
+# the same without vertex colors
+write('meshes/lines_star_plain.obj', "\n".join([" ".join(l.split()[:4]) if l.startswith("v ") else l for l in star + lines]) + "\n")
+
+pts = ["# Points on a jittered grid, vertex colors."]
+for j in range(5):
+    for i in range(8):
+        pts.append("v %.5f %.5f %.3f %.3f %.3f 0.4" % (-1.1 + 0.31 * i + 0.013 * j, -0.7 + 0.33 * j + 0.007 * i, 0.1 * ((i + j) % 3), i / 7, j / 4))
+pts.append("p " + " ".join(str(k + 1) for k in range(40)))
+write('meshes/points_grid.obj', "\n".join(pts) + "\n")
+
+ORTHO = {"projection": "orthographic", "eye": [0, 0, 3], "target": [0, 0, 0], "height": 2}
+unlit_white = {"shading": "unlit", "color": [1, 1, 1, 1]}
+scene("lines_star", [{"mesh": "meshes/lines_star.obj", "primitive": "lines", "material": unlit_white}], camera=ORTHO)
+scene("lines_wide", [
+    {"builtin": {"type": "uv_sphere", "radius": 0.5}, "transform": {"translate": [0.2, 0, -0.2]}, "material": {"color": [0.3, 0.5, 0.8, 1]}},
+    {"mesh": "meshes/lines_star.obj", "primitive": "lines", "line_width": 3, "material": unlit_white},
+    {"mesh": "meshes/lines_star.obj", "primitive": "lines", "line_width": 2,
+     "transform": {"translate": [0.25, -0.2, 0.1], "rotate": [0, 0, 17], "scale": 0.75},
+     "material": {"shading": "unlit", "color": [1, 0.4, 0.2, 1]}},
+], camera=ORTHO)
+scene("lines_msaa4", [
+    {"mesh": "meshes/lines_star_plain.obj", "primitive": "lines", "material": unlit_white},
+    {"mesh": "meshes/lines_star_plain.obj", "primitive": "lines", "line_width": 2.5,
+     "transform": {"translate": [0.3, -0.2, 0.1], "rotate": [0, 0, 23], "scale": 0.75},
+     "material": {"shading": "unlit", "color": [1, 0.6, 0.2, 0.7], "blend": "alpha"}},
+], camera=ORTHO, samples=4)
+points = [{"mesh": "meshes/points_grid.obj", "primitive": "points", "point_size": size, "transform": {"translate": [dx, dy, 0]},
+           "material": unlit_white} for size, dx, dy in [(1, 0, 0), (2, 0.06, 0.05), (3.5, 0.12, -0.06), (6, 0.03, 0.13)]]
+scene("points_sizes", points, camera=ORTHO)
+scene("points_msaa4", points, camera=ORTHO, samples=4)
+# triangle edges as lines, in perspective, through the near plane; a sphere's vertices as points
+scene("lines_perspective", [
+    {"builtin": {"type": "plane", "size": 6, "divisions": 7}, "transform": {"translate": [0.13, -0.5, -1.5], "rotate": [0, 11, 0]},
+     "primitive": "lines", "material": {"shading": "unlit", "texture": "../conformance/textures/checker.png"}},
+    {"builtin": {"type": "uv_sphere", "radius": 0.6, "rings": 12, "segments": 20}, "transform": {"translate": [0.3, 0.1, -1.2]},
+     "primitive": "points", "point_size": 2, "material": {"shading": "unlit", "color": [1, 0.9, 0.3, 1]}},
+], camera={"eye": [0, 0.3, 0.6], "target": [0, -0.2, -2], "fov_y": 60})
+scene("wireframe", [
+    {"builtin": {"type": "torus", "major": 0.75, "minor": 0.3, "rings": 14, "segments": 8}, "transform": {"rotate": [50, 10, 0]},
+     "material": torus["material"], "wireframe": {"color": [0.05, 0.05, 0.1]}},
+    {"builtin": {"type": "cube", "size": 0.7}, "transform": {"translate": [1.0, 0.5, 0.2], "rotate": [20, 35, 10]},
+     "material": {"color": [0.4, 0.8, 0.5, 1]}, "wireframe": {"color": [1, 1, 1], "width": 2}},
+    {"builtin": {"type": "uv_sphere", "radius": 0.35, "rings": 8, "segments": 12}, "transform": {"translate": [-1.0, -0.5, 0.3]},
+     "material": {"shading": "flat", "color": [0.8, 0.4, 0.4, 1]}, "wireframe": {"color": [1, 0.9, 0.2]}},
+], camera=SKEW_CAM)

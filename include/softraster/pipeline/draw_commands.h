@@ -167,7 +167,7 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
 template <int Samples, int N>
 void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const DrawTarget& target,
                       const LinePointShape& shape, FlatVaryings flat, TriangleBin<N>& bin) {
-    softraster::bin_lines_points<Samples>(topology, indices, post, target.viewport, shape, flat, target.grid, bin);
+    softraster::bin_lines_points<Samples>(topology, indices, post, target.planes, target.viewport, shape, flat, target.grid, bin);
 }
 template <int Samples, int N>
 void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& state, Framebuffer& fb, int tx, int ty,

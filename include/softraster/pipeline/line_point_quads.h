@@ -107,8 +107,16 @@ void line_quad(const WindowVertex<N>& a, const WindowVertex<N>& b, const LinePoi
     const float au = x_major ? a.x : a.y, av = x_major ? a.y : a.x, bu = x_major ? b.x : b.y, bv = x_major ? b.y : b.x;
     const float du = bu - au, slope = (bv - av) / du;
     const bool forward = du > 0.0f;
-    // The endpoints' columns: whether the diamond-exit rule draws them.
-    const float acx = std::floor(a.x) + 0.5f, acy = std::floor(a.y) + 0.5f, bcx = std::floor(b.x) + 0.5f, bcy = std::floor(b.y) + 0.5f;
+    // The endpoints' columns: whether the diamond-exit rule draws them. In a column the line
+    // meets one diamond, if any: that of the pixel its band covers at the column's center
+    // (the pixel whose center lies within 1/2 of the line there).
+    auto pixel_center_in_column = [&](float u) {
+        const float cu = std::floor(u) + 0.5f, v = av + (cu - au) * slope;
+        const float cv = std::ceil(v - 1.0f) + 0.5f;  // the center in [v - 1/2, v + 1/2)
+        return x_major ? std::array<float, 2>{cu, cv} : std::array<float, 2>{cv, cu};
+    };
+    const auto [acx, acy] = pixel_center_in_column(au);
+    const auto [bcx, bcy] = pixel_center_in_column(bu);
     const bool draw_first = segment_meets_diamond(a.x, a.y, b.x, b.y, acx, acy);
     const bool draw_last = !inside_diamond(b.x, b.y, bcx, bcy) && segment_meets_diamond(a.x, a.y, b.x, b.y, bcx, bcy);
     // Whether the parallelogram between the endpoints themselves holds each endpoint column's
@@ -142,13 +150,13 @@ void point_quad(const WindowVertex<N>& p, const LinePointShape& shape, Emit&& em
 // The front end for one chunk of a draw of lines or points: assembly and clipping
 // (primitive_assembly.h), the quads, then binning (binning.h) of their two triangles each.
 template <int Samples, int N>
-void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const Viewport& vp,
-                      const LinePointShape& shape, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
+void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
+                      const Viewport& vp, const LinePointShape& shape, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
     bin.pending.clear();
     bin.range = {};
     std::vector<WindowVertex<N>> window;
-    assemble_lines_points(topology, indices, post, vp, window);
+    assemble_lines_points(topology, indices, post, planes, vp, window);
     auto emit = [&](const ShadedVertex<N>& c0, const ShadedVertex<N>& c1, const ShadedVertex<N>& c2, const ShadedVertex<N>& c3) {
         const auto first = uint32_t(bin.clipped.size());
         bin.clipped.insert(bin.clipped.end(), {c0, c1, c2, c3});

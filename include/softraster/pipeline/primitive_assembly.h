@@ -90,19 +90,21 @@ void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>
     }
 }
 
-// Assembles lines (two indices each) or points (one each), clips them to the exact view
-// volume (Liang–Barsky for lines; a point is kept when inside) and appends their window
-// vertices to `out`, two per line, one per point.
+// Assembles lines (two indices each) or points (one each), clips them and appends their
+// window vertices to `out`, two per line, one per point. Lines are clipped (Liang–Barsky)
+// against `planes`, whose sides lie out at the guard band, as triangles are: a line that
+// leaves the picture keeps its true end, so the pixels at the picture's border are the
+// ones the whole line covers (as llvmpipe). A point is kept when inside the view volume.
 template <int N>
 void assemble_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post,
-                           const Viewport& vp, std::vector<WindowVertex<N>>& out) {
+                           const ClipPlanes& planes, const Viewport& vp, std::vector<WindowVertex<N>>& out) {
     const ClipPlanes frustum = ClipPlanes::frustum();
     const size_t per = topology == Topology::Lines ? 2 : 1;
     for (size_t i = 0; i + per <= indices.size(); i += per) {
         const ShadedVertex<N>&first = post[indices[i]], &last = post[indices[i + per - 1]];
         if (!first.finite || !last.finite) continue;
         ClipVertex<N> a = first.clip, b = last.clip;
-        if (per == 2 ? !clip_line(a, b, frustum) : frustum.outcode(a.position) != 0) continue;
+        if (per == 2 ? !clip_line(a, b, planes) : frustum.outcode(a.position) != 0) continue;
         WindowVertex<N> wa, wb;
         if (!to_window(a, vp, wa) || !to_window(b, vp, wb)) continue;
         out.push_back(wa);

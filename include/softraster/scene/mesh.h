@@ -1,5 +1,5 @@
-// Triangle meshes as the scene format defines them: every vertex has a position, normal,
-// texture coordinate and color, and triangles keep the order of the file.
+// Meshes as the scene format defines them: every vertex has a position, normal, texture
+// coordinate and color; triangles, lines and points keep the order of the file.
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -8,6 +8,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+
+#include "softraster/pipeline/pipeline_types.h"
 
 namespace softraster {
 
@@ -21,12 +23,21 @@ struct MeshVertex {
 struct Mesh {
     std::vector<MeshVertex> vertices;
     std::vector<uint32_t> indices;  // three per triangle
+    std::vector<uint32_t> lines;    // two per segment (OBJ `l` elements)
+    std::vector<uint32_t> points;   // one per point (OBJ `p` elements)
 
     size_t triangle_count() const { return indices.size() / 3; }
     // Appends triangle (a, b, c) with fresh corners that all carry its face normal
     // normalize(cross(b - a, c - a)): the rule for triangles without vertex normals.
     void add_face_normal_triangle(MeshVertex a, MeshVertex b, MeshVertex c);
 };
+
+// The edges of the triangles, each once (either direction), in the order they first appear:
+// two indices per edge.
+std::vector<uint32_t> triangle_edges(const Mesh& mesh);
+// What an object drawn as `primitive` draws: its triangles; its lines, or if it has none the
+// edges of its triangles; its points, or if it has none every vertex.
+std::vector<uint32_t> primitive_indices(const Mesh& mesh, Topology primitive);
 
 // Loaders. Each throws InputError("<path>:<line>: <what>") for a file it cannot use.
 Mesh load_obj(const std::filesystem::path& path);

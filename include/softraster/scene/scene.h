@@ -48,6 +48,12 @@ struct ObjectState {
     std::optional<ScissorRect> scissor;
 };
 
+// A mesh's edges drawn over it (version 2).
+struct Wireframe {
+    glm::vec3 color{0.0f};
+    float width = 1.0f;
+};
+
 struct DirectionalLight {
     glm::vec3 direction{0, -1, 0};  // the way the light travels
     glm::vec3 color{1.0f};
@@ -74,6 +80,10 @@ struct SceneObject {
     CullMode cull = CullMode::Back;
     FrontFace front_face = FrontFace::CCW;
     ObjectState state;
+    // Version 2: what is drawn (primitive_indices in mesh.h), and how wide.
+    Topology primitive = Topology::Triangles;
+    float line_width = 1.0f, point_size = 1.0f;
+    std::optional<Wireframe> wireframe;
 };
 
 struct Scene {

@@ -49,6 +49,9 @@ public:
     struct Draw {
         const Mesh* mesh = nullptr;          // the object's mesh, or `flat_mesh`
         std::shared_ptr<Mesh> flat_mesh;     // flat shading: corners carry world face normals
+        // Lines and points (drawn unlit): their indices into the mesh (primitive_indices).
+        Topology primitive = Topology::Triangles;
+        std::shared_ptr<const std::vector<uint32_t>> line_point_indices;
         SurfaceUniforms uniforms;
         RenderState state;
         Shading shading = Shading::Lambert;
