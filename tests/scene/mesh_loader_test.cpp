@@ -68,6 +68,33 @@ TEST(ObjLoader, NonFinitePositionsAreKeptForTheRendererToSkip) {
     EXPECT_TRUE(std::isnan(m.vertices[m.indices[0]].position.x));
 }
 
+TEST(ObjLoader, LinesAndPoints) {
+    const Mesh m = load_obj(write_temp("lp.obj", "v 0 0 0 1 0 0\nv 1 0 0\nv 1 1 0\nvt 0.5 0.25\nl 1 2/1 3\np 3 1\nf 1 2 3\n"));
+    EXPECT_EQ(m.triangle_count(), 1u);
+    ASSERT_EQ(m.lines.size(), 4u);  // the polyline 1 2 3 as two segments
+    EXPECT_EQ(m.vertices[m.lines[0]].position, glm::vec3(0, 0, 0));
+    EXPECT_EQ(m.vertices[m.lines[0]].color, glm::vec4(1, 0, 0, 1));
+    EXPECT_EQ(m.lines[1], m.lines[2]);
+    EXPECT_EQ(m.vertices[m.lines[1]].uv, glm::vec2(0.5f, 0.25f));
+    ASSERT_EQ(m.points.size(), 2u);
+    EXPECT_EQ(m.vertices[m.points[0]].position, glm::vec3(1, 1, 0));
+    EXPECT_EQ(m.points[0], m.lines[3]);  // the same corner is one vertex
+}
+
+TEST(Mesh, PrimitiveIndices) {
+    Mesh m;
+    m.vertices.resize(4);
+    m.indices = {0, 1, 2, 2, 1, 3};
+    EXPECT_EQ(triangle_edges(m), (std::vector<uint32_t>{0, 1, 1, 2, 2, 0, 1, 3, 3, 2}));  // (2, 1) is (1, 2)
+    EXPECT_EQ(primitive_indices(m, Topology::Lines), triangle_edges(m));
+    EXPECT_EQ(primitive_indices(m, Topology::Points), (std::vector<uint32_t>{0, 1, 2, 3}));
+    m.lines = {3, 0};
+    m.points = {2};
+    EXPECT_EQ(primitive_indices(m, Topology::Lines), (std::vector<uint32_t>{3, 0}));
+    EXPECT_EQ(primitive_indices(m, Topology::Points), (std::vector<uint32_t>{2}));
+    EXPECT_EQ(primitive_indices(m, Topology::Triangles), m.indices);
+}
+
 TEST(ObjLoader, Errors) {
     const std::pair<const char*, const char*> cases[] = {
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", "index 0"},

@@ -124,3 +124,35 @@ TEST(SceneJson, BlendedObjectsAreDrawnLastFarthestFirst) {
     EXPECT_FALSE(r.draws()[1].state.depth_write);               // blended: test, no write
     EXPECT_TRUE(r.draws()[0].state.depth_write);
 }
+
+// Version 2 lines, points and wireframes become draws of the right primitive and state.
+TEST(SceneJson, LinesPointsAndWireframes) {
+    const std::string json = R"({"version": 2, "image": {"width": 8, "height": 8},
+      "camera": {"eye": [0, 0, 10], "target": [0, 0, 0]},
+      "objects": [
+        {"builtin": {"type": "cube"}, "primitive": "lines", "line_width": 3, "material": {"shading": "lambert"}},
+        {"builtin": {"type": "cube"}, "primitive": "points", "point_size": 4.5},
+        {"builtin": {"type": "cube"}, "wireframe": {"color": [1, 0.5, 0], "width": 2}, "depth": {"offset": [2, 3]}}
+      ]})";
+    const Scene s = load_scene(write_scene("lines.json", json));
+    EXPECT_EQ(s.objects[0].primitive, Topology::Lines);
+    EXPECT_EQ(s.objects[2].primitive, Topology::Triangles);
+    const SceneRenderer r(s);
+    ASSERT_EQ(r.draws().size(), 4u);  // the wireframe is a draw of its own, right after its object
+    const auto& lines = r.draws()[0];
+    EXPECT_EQ(lines.primitive, Topology::Lines);
+    EXPECT_EQ(lines.shading, Shading::Unlit);  // lines and points are unlit
+    EXPECT_EQ(*lines.line_point_indices, triangle_edges(*s.objects[0].mesh));  // it has no line elements
+    EXPECT_FLOAT_EQ(lines.state.line_width, 3);
+    EXPECT_EQ(r.draws()[1].line_point_indices->size(), s.objects[1].mesh->vertices.size());
+    EXPECT_FLOAT_EQ(r.draws()[1].state.point_size, 4.5f);
+    const auto &surface = r.draws()[2], &wire = r.draws()[3];
+    EXPECT_EQ(surface.primitive, Topology::Triangles);
+    EXPECT_FLOAT_EQ(surface.state.polygon_offset_factor, 3);  // pushed back under its edges
+    EXPECT_FLOAT_EQ(surface.state.polygon_offset_units, 4);
+    EXPECT_EQ(wire.primitive, Topology::Lines);
+    EXPECT_EQ(wire.uniforms.color, glm::vec4(1, 0.5f, 0, 1));
+    EXPECT_EQ(wire.uniforms.texture, nullptr);
+    EXPECT_FLOAT_EQ(wire.state.line_width, 2);
+    EXPECT_EQ(r.triangle_count(), 12u);  // the surface only
+}
