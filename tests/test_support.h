@@ -98,6 +98,15 @@ std::vector<uint32_t> grid_indices(int n, Diagonal&& diagonal) {
     return idx;
 }
 
+// Sets a context up to count coverage: cleared to black, no culling, no depth test, additive
+// blending (each fragment adds its color times its alpha to what is stored).
+inline void count_coverage(Context& ctx) {
+    ctx.clear(glm::vec4(0, 0, 0, 1));
+    ctx.state.cull = CullMode::None;
+    ctx.state.depth_test = false;
+    ctx.state.blend = BlendMode::Additive;
+}
+
 template <class S>
 void draw(Context& ctx, const S& shader, const std::vector<typename S::Vertex>& v, const std::vector<uint32_t>& idx,
           Topology t = Topology::Triangles) {

@@ -100,10 +100,11 @@ RenderState render_state(const SceneObject& o, int supersample) {
     return st;
 }
 
-// The draw of an object's wireframe: its triangles' edges, unlit in one color, opaque, with
-// the object's depth, stencil, scissor and color mask. (The object itself is drawn pushed
-// back by polygon offset, so the edges win the depth test against it.)
-SceneRenderer::Draw wireframe_draw(const SceneRenderer::Draw& object, const Wireframe& wire) {
+// The draw of an object's wireframe: its triangles' edges, unlit in one color, opaque,
+// writing depth unless the object says not to, with the object's depth test, stencil,
+// scissor and color mask. (The object itself is drawn pushed back by polygon offset, so the
+// edges win the depth test against it.)
+SceneRenderer::Draw wireframe_draw(const SceneRenderer::Draw& object, const SceneObject& o, const Wireframe& wire) {
     SceneRenderer::Draw d;
     d.mesh = object.mesh;
     d.primitive = Topology::Lines;
@@ -117,6 +118,7 @@ SceneRenderer::Draw wireframe_draw(const SceneRenderer::Draw& object, const Wire
     d.state.blend = BlendMode::Opaque;
     d.state.alpha_test = d.state.alpha_to_coverage = d.state.noperspective = false;
     d.state.line_width = wire.width;
+    d.state.depth_write = o.state.depth_write.value_or(true);
     return d;
 }
 
@@ -184,8 +186,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         const size_t index = size_t(&o - scene.objects.data());
         std::optional<Draw> wire;
         if (o.wireframe) {
-            wire = wireframe_draw(d, *o.wireframe);
-            wire->state.depth_write = o.state.depth_write.value_or(true);
+            wire = wireframe_draw(d, o, *o.wireframe);
             d.state.polygon_offset_factor += 1.0f;
             d.state.polygon_offset_units += 1.0f;
         }

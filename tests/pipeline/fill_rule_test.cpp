@@ -27,10 +27,7 @@ struct Mesh2D {
 std::vector<int> coverage_counts(const Mesh2D& m, int samples, std::mt19937& rng) {
     Framebuffer fb(W, H, samples);
     Context ctx(fb);
-    ctx.clear(glm::vec4(0, 0, 0, 1));
-    ctx.state.cull = CullMode::None;
-    ctx.state.depth_test = false;
-    ctx.state.blend = BlendMode::Additive;
+    count_coverage(ctx);
     std::uniform_real_distribution<float> wdist(0.5f, 3.0f);
     std::vector<ClipVertexIn> v;
     for (const glm::vec2& p : m.points) v.push_back({window_to_clip(p.x, p.y, W, H, 0.5f, wdist(rng)), 0});
@@ -189,10 +186,7 @@ TEST(FillRule, ClippedGroundCoversEverySampleOnce) {
     for (int samples : {1, 4}) {
         Framebuffer fb(W, H, samples);
         Context ctx(fb);
-        ctx.clear(glm::vec4(0, 0, 0, 1));
-        ctx.state.cull = CullMode::None;
-        ctx.state.depth_test = false;
-        ctx.state.blend = BlendMode::Additive;
+        count_coverage(ctx);
         const glm::mat4 vp = glm::perspective(glm::radians(45.0f), float(W) / H, 0.1f, 100.0f) *
                              glm::lookAt(glm::vec3(0, 1, 0), glm::vec3(0, 0, -0.6f), glm::vec3(0, 1, 0));
         const int n = 40;

@@ -73,9 +73,7 @@ TEST(Lines, DiamondExitAtTheEnds) {
 TEST(Lines, StripDrawsSharedEndpointsOnce) {
     Framebuffer fb(W, H);
     Context ctx(fb);
-    ctx.clear(glm::vec4(0, 0, 0, 1));
-    ctx.state.blend = BlendMode::Additive;
-    ctx.state.depth_test = false;
+    count_coverage(ctx);
     // (x-major segments: the rule keeps two segments of the same major axis from both drawing
     // their shared endpoint's pixel)
     const std::vector<ClipVertexIn> v = {{window_to_clip(1.3f, 2.2f, W, H), 0}, {window_to_clip(6.62f, 4.23f, W, H), 0},

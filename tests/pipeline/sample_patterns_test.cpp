@@ -88,7 +88,7 @@ TEST_P(SamplePatterns, EachSampleCoveredExactlyWhenInside) {
 }
 
 TEST_P(SamplePatterns, SharedEdgesCoverEachSampleOnce) {
-    // A fan of triangles around a center, added up (one, one): no sample may get two.
+    // A fan of triangles around a center, added up (additive blending): no sample may get two.
     const int n = GetParam();
     std::mt19937 rng(99 + unsigned(n));
     for (int trial = 0; trial < 20; ++trial) {
@@ -98,12 +98,8 @@ TEST_P(SamplePatterns, SharedEdgesCoverEachSampleOnce) {
         for (uint32_t k = 1; k < 10; ++k) idx.insert(idx.end(), {0, k, k % 9 + 1});
         Framebuffer fb(W, H, n);
         Context ctx(fb);
-        ctx.clear(glm::vec4(0, 0, 0, 0));
-        ctx.state.cull = CullMode::None;
-        ctx.state.depth_test = false;
-        ctx.state.blend = BlendMode::Custom;
-        ctx.state.blend_equation.src_rgb = ctx.state.blend_equation.dst_rgb = BlendFactor::One;
-        draw(ctx, ConstantColorShader{glm::vec4(16 / 255.0f, 0, 0, 0)}, v, idx);
+        count_coverage(ctx);
+        draw(ctx, ConstantColorShader{glm::vec4(16 / 255.0f, 0, 0, 1)}, v, idx);
         // each sample: covered by as many triangles as the independent test says, at most one
         // where the fan does not fold over itself: check the sum against the test.
         const auto p = [&](uint32_t i) {

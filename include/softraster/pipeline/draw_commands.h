@@ -50,8 +50,8 @@ public:
     // Draws this command's part of one tile; returns the fragments shaded.
     virtual uint64_t draw_tile(int tile, const Rect& rect, const DrawTarget&) = 0;
 
-    // Commands binned by tile draw only in the tiles their triangles touch; the others
-    // (a clear, lines and points) draw in every tile.
+    // Commands binned by tile draw only in the tiles their triangles touch; the others (a
+    // clear) draw in every tile.
     bool binned() const { return binned_; }
     const TileRange& tiles() const { return range_; }
     size_t triangles_in_tile(int tile) const {
@@ -165,11 +165,6 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
     });
 }
 template <int Samples, int N>
-void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const DrawTarget& target,
-                      const LinePointShape& shape, FlatVaryings flat, TriangleBin<N>& bin) {
-    softraster::bin_lines_points<Samples>(topology, indices, post, target.planes, target.viewport, shape, flat, target.grid, bin);
-}
-template <int Samples, int N>
 void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& state, Framebuffer& fb, int tx, int ty,
                      const Rect& rect, uint32_t draw, uint32_t* owners) {
     simd::on_best_path([&]<bool>() { softraster::visibility_pass<Samples>(triangles, state, fb, tx, ty, rect, draw, owners); });
@@ -213,7 +208,7 @@ public:
             phases::bin_triangles<BinSamples>(chunk, post_.data(), target, FaceState{state_.cull, state_.front_face}, flat, bins_[c]);
         } else {
             const LinePointShape shape{state_.line_width, state_.point_size, target.fb->samples() > 1, state_.front_face};
-            phases::bin_lines_points<BinSamples>(T, chunk, post_.data(), target, shape, flat, bins_[c]);
+            bin_lines_points<BinSamples>(T, chunk, post_.data(), target.planes, target.viewport, shape, flat, target.grid, bins_[c]);
         }
     }
     void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }

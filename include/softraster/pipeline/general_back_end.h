@@ -10,7 +10,6 @@
 //
 // To keep the build small this back end is compiled once per shader: the sample count is a
 // run-time value, and only rasterization, the same for every shader, is compiled per count.
-// Lines and points (line_rasterization.h) use its per-fragment stage too.
 #pragma once
 #include <array>
 #include <cstdint>

@@ -82,7 +82,6 @@ ShadedVertex<N> quad_corner(const WindowVertex<N>& a, const WindowVertex<N>& b, 
     const double qa = a.inv_w, qb = b.inv_w, q = qa + t * (qb - qa);  // 1/w is linear in window space
     c.window = {x + float(ox) / float(kSubpixelOne), y + float(oy) / float(kSubpixelOne),
                 float(double(a.z) + t * (double(b.z) - a.z)), float(q)};
-    c.clip.position = glm::vec4(c.window.x, c.window.y, c.window.z, 1.0f);  // not read again
     for (size_t k = 0; k < size_t(N); ++k)  // var/w is linear too: var = (var/w) / (1/w)
         c.clip.var[k] = (flat >> k) & 1 ? provoking.var[k]
                                         : float((double(a.var[k]) * qa + t * (double(b.var[k]) * qb - double(a.var[k]) * qa)) / q);
