@@ -1,6 +1,8 @@
 // The stencil test and its operations (depth_stencil.h), sample by sample, in GL's order.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "softraster/pipeline/depth_stencil.h"
 
 using namespace softraster;
@@ -59,4 +61,43 @@ TEST(Stencil, CompareUsesTheReadMask) {
     EXPECT_EQ(test.test_and_write(depth, s, 1, 1, z, true), 1u);
     s[0] = 0x02;
     EXPECT_EQ(test.test_and_write(depth, s, 1, 1, z, true), 0u);
+}
+
+// The fast back end's eight-lane test (test_group) against the sample-by-sample one, for
+// random functions, operations, masks and faces, and for a group cut by the row's end.
+TEST(Stencil, EightLanesEqualOneAtATime) {
+    std::mt19937 rng(7);
+    auto pick = [&](int n) { return int(rng() % unsigned(n)); };
+    for (int round = 0; round < 2000; ++round) {
+        RenderState st;
+        st.stencil_test = true;
+        st.depth_test = pick(4) != 0;
+        st.depth_write = pick(2) != 0;
+        st.depth_func = CompareFunc(pick(8));
+        for (StencilFace* f : {&st.stencil_front, &st.stencil_back}) {
+            *f = {CompareFunc(pick(8)), uint8_t(pick(4) == 0 ? 255 : pick(4)), uint8_t(pick(2) ? 0xff : rng()),
+                  uint8_t(pick(2) ? 0xff : rng()), StencilOp(pick(8)), StencilOp(pick(8)), StencilOp(pick(8))};
+        }
+        const DepthStencilTest test(st);
+        const bool front = pick(2) != 0;
+        const int width = pick(3) == 0 ? 3 + pick(5) : 8;  // fewer than eight pixels left in the row
+        float depth[8], depth_one[8], z_lanes[8];
+        uint8_t stencil[8], stencil_one[8];
+        simd::i8 covered{};
+        simd::f8 z{};
+        for (int l = 0; l < 8; ++l) {
+            depth[l] = depth_one[l] = float(pick(4)) * 0.25f;
+            stencil[l] = stencil_one[l] = uint8_t(pick(3) == 0 ? 255 : pick(4));  // around 0, 255 and small refs
+            z[l] = z_lanes[l] = float(pick(4)) * 0.25f;
+            covered[l] = l < width && pick(4) != 0 ? -1 : 0;
+        }
+        const unsigned pass = simd::bits(test.test_group(depth, stencil, 0, width, z, covered, front));
+        for (int l = 0; l < width; ++l) {
+            const unsigned one = test.test_and_write(depth_one + l, stencil_one + l, 1, covered[l] ? 1u : 0u, z_lanes + l, front);
+            EXPECT_EQ((pass >> l) & 1u, one) << "round " << round << " lane " << l;
+            EXPECT_EQ(stencil[l], stencil_one[l]) << "round " << round << " lane " << l;
+            EXPECT_EQ(depth[l], depth_one[l]) << "round " << round << " lane " << l;
+        }
+        if (HasFailure()) return;
+    }
 }

@@ -14,7 +14,8 @@
 // fails gets the face's `fail` operation and is not drawn; one that then fails the depth test
 // gets `depth_fail`; one that passes both gets `pass` (and its depth written). Operations
 // write only the bits of write_mask: stored = (stored & ~write_mask) | (new & write_mask).
-// Front and back faces have their own state. The fast back end has no stencil code at all.
+// Front and back faces have their own state. Only draws that test stencil compile this code
+// (DepthStencilTest, a template parameter of the back end); the others run DepthTest.
 #pragma once
 #include <cstdint>
 
@@ -85,22 +86,25 @@ struct DepthTest {
     }
 };
 
-// The stencil value after operation `op` (before the write mask).
-inline uint8_t stencil_op_result(StencilOp op, uint8_t stored, uint8_t ref) {
+// The stencil value after operation `op` (before the write mask), for one value (T = int
+// or uint8_t) or eight (T = simd::i8, lane by lane): the same code either way, all in 0..255.
+template <class T>
+inline T stencil_op_result(StencilOp op, T stored, T ref) {
+    const T zero{}, top = zero + 255;
     switch (op) {
         case StencilOp::Keep: return stored;
-        case StencilOp::Zero: return 0;
+        case StencilOp::Zero: return zero;
         case StencilOp::Replace: return ref;
-        case StencilOp::Incr: return stored == 255 ? 255 : uint8_t(stored + 1);
-        case StencilOp::IncrWrap: return uint8_t(stored + 1);
-        case StencilOp::Decr: return stored == 0 ? 0 : uint8_t(stored - 1);
-        case StencilOp::DecrWrap: return uint8_t(stored - 1);
-        case StencilOp::Invert: return uint8_t(~stored);
+        case StencilOp::Incr: return stored < top ? T(stored + 1) : top;
+        case StencilOp::IncrWrap: return T((stored + 1) & 255);
+        case StencilOp::Decr: return stored > zero ? T(stored - 1) : zero;
+        case StencilOp::DecrWrap: return T((stored - 1) & 255);
+        case StencilOp::Invert: return T(~stored & 255);
     }
     return stored;
 }
 inline void apply_stencil_op(const StencilFace& f, StencilOp op, uint8_t& stored) {
-    stored = uint8_t((stored & ~f.write_mask) | (stencil_op_result(op, stored, f.ref) & f.write_mask));
+    stored = uint8_t((stored & ~f.write_mask) | (stencil_op_result<uint8_t>(op, stored, f.ref) & f.write_mask));
 }
 
 // The depth and stencil tests of one draw, sample by sample.
@@ -134,6 +138,32 @@ struct DepthStencilTest {
             if (depth.write) stored_z[s] = z[s];
             pass |= 1u << s;
         }
+        return pass;
+    }
+
+    // The same for eight single-sampled pixels at depth[at, at + 8) and stencil[at, at + 8)
+    // of a row of `width` (the fast back end's groups, tile_back_end.h): returns the lanes of
+    // `covered` that pass both tests.
+    simd::i8 test_group(float* depth_row, uint8_t* stencil_row, int at, int width, simd::f8 z, simd::i8 covered,
+                        bool front_facing) const {
+        using simd::i8;
+        if (!stencil) return depth.test_group(depth_row, at, width, z, covered);  // (there may be no stencil buffer)
+        const StencilFace& f = front_facing ? front : back;
+        const int n = width - at < simd::kLanes ? width - at : simd::kLanes;
+        i8 stored{};
+        for (int l = 0; l < n; ++l) stored[l] = stencil_row[at + l];
+        const i8 read = simd::splat_i(f.read_mask), ref = simd::splat_i(f.ref);
+        const i8 stencil_pass = covered & depth_compare(f.func, ref & read, stored & read);
+        const simd::f8 old_z = simd::load_group<simd::f8>(depth_row, at, width);
+        const i8 pass = depth.enabled ? stencil_pass & depth_compare(depth.func, z, old_z) : stencil_pass;
+        // Each lane's operation: fail where the stencil test failed, depth fail, pass, or none.
+        const i8 result = simd::select(covered & ~stencil_pass, stencil_op_result(f.fail, stored, ref),
+                                       simd::select(stencil_pass & ~pass, stencil_op_result(f.depth_fail, stored, ref),
+                                                    simd::select(pass, stencil_op_result(f.pass, stored, ref), stored)));
+        const i8 write = simd::splat_i(f.write_mask);
+        const i8 updated = (stored & ~write) | (result & write);
+        for (int l = 0; l < n; ++l) stencil_row[at + l] = uint8_t(updated[l]);
+        if (depth.write) simd::store_group(depth_row, at, width, simd::select(pass, z, old_z));
         return pass;
     }
 };

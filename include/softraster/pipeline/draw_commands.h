@@ -280,7 +280,17 @@ public:
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
         const Rect rect = this->scissored(tile_rect, state_);
         if (rect.empty()) return 0;
-        return draw_tile_general(shader_, ops_, state_, triangles(), *target.fb, target.grid.tile_x(tile), target.grid.tile_y(tile), rect);
+        const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
+        if constexpr (BatchShader<S>) {
+            // Single-sampled, with nothing after the shader that could drop a fragment: the
+            // fast back end's groups of eight, with the stencil test in them.
+            if (ops_.samples == 1 && ops_.early) {
+                const TileBackEnd<S, 1, /*Blended=*/true, DepthStencilTest> back_end{shader_, state_, ops_.tests, ops_.blend,
+                                                                                     triangles(), *target.fb};
+                return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
+            }
+        }
+        return draw_tile_general(shader_, ops_, state_, triangles(), *target.fb, tx, ty, rect);
     }
 
 private:

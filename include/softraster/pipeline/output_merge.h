@@ -69,11 +69,14 @@ struct BlendSettings {
     uint8_t color_mask = 0xf;  // bits r, g, b, a
     bool replace = false;      // the source replaces every channel: no arithmetic needed
     explicit BlendSettings(const RenderState& st)
-        : mode(st.blend),
-          eq(st.blend == BlendMode::Custom ? st.blend_equation : blend_preset(st.blend)),
+        : eq(st.blend == BlendMode::Custom ? st.blend_equation : blend_preset(st.blend)),
           constant(quantize_rgba8(eq.constant)),
           color_mask(st.color_write ? st.color_mask : 0),
-          replace(st.blend == BlendMode::Opaque && color_mask == 0xf) {}
+          replace(st.blend == BlendMode::Opaque && color_mask == 0xf) {
+        // A partial color mask takes the general arithmetic (blend_channels), which keeps
+        // the masked channels; the presets' own paths write all four.
+        mode = color_mask != 0 && color_mask != 0xf ? BlendMode::Custom : st.blend;
+    }
 };
 
 // One channel's factor and result, for one pixel (T = int) or eight (T = simd::i8, lane by

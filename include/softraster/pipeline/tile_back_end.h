@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 
 #include "softraster/framebuffer.h"
 #include "softraster/pipeline/binning.h"
@@ -78,6 +79,9 @@ struct TileBackEnd {
     static constexpr int N = kVaryingCount<typename S::Varyings>;
     static constexpr uint64_t Flat = kFlatVaryings<S>;
     using V = typename S::Varyings;
+    // Draws that test stencil (general_back_end.h sends the single-sampled ones here) run
+    // only EightPixelGroups, with the stencil test in the groups.
+    static constexpr bool kStencil = std::is_same_v<DepthStencil, DepthStencilTest>;
 
     // By value, not by reference: the tile loops read them after every framebuffer store,
     // which may alias anything, so each reference would cost another load there.
@@ -134,12 +138,12 @@ struct TileBackEnd {
         }
         for_each_triangle_setup<Samples, true, Flat>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
             if constexpr (Samples == 1 && BatchShader<S>) {
-                if (WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {  // EightPixelGroups
+                if (kStencil || WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {  // EightPixelGroups
                     shaded += draw_groups(setup);
                     return;
                 }
             }
-            shaded += draw_pixels(setup);
+            if constexpr (!kStencil) shaded += draw_pixels(setup);
         });
         return shaded;
     }
@@ -173,10 +177,15 @@ struct TileBackEnd {
             for_each_group(x_begin, x_end, [&](int x, i8 covered) {
                 const f8 i = to_float(kLaneIndex) + float(x - t.origin_x);
                 const f8 z = interpolate_depth(t, i, j);
-                const i8 pass = depth.test_group(depth_row, x, width, z, covered);
+                i8 pass;
+                if constexpr (kStencil) {
+                    pass = depth.test_group(depth_row, fb.stencil_data() + fb.sample_index(0, y), x, width, z, covered, t.front_facing);
+                } else {
+                    pass = depth.test_group(depth_row, x, width, z, covered);
+                }
                 if (!any(pass)) return;
+                if (!blend.color_mask) return;  // (a stencil or depth pass only: no fragment to shade)
                 shaded += unsigned(__builtin_popcount(bits(pass)));
-                if (!state.color_write) return;
                 shade_group<Blended>(shader, blend, color_row, x, width, pass, interpolate_perspective<Flat>(t, i, j), z, t.front_facing);
             });
         });
