@@ -3,6 +3,7 @@
 
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "test_support.h"
 
@@ -92,8 +93,8 @@ TEST(Quantize, RoundsHalfUpAndClamps) {
     EXPECT_EQ(quantize_unorm8(1.0f / 255.0f), 1);
 }
 
-// Eight pixels at a time (blend_group) give the same bytes as one at a time (blend), for
-// every mode, lanes written or not, colors in and out of [0, 1] and NaN.
+// Eight pixels at a time (blend_group; blend_row for Custom) give the same bytes as one at
+// a time (blend), for every mode, lanes written or not, colors in and out of [0, 1] and NaN.
 TEST(Blend, EightLanesEqualOneAtATime) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> c(-0.2f, 1.2f);
@@ -124,10 +125,53 @@ TEST(Blend, EightLanesEqualOneAtATime) {
                     expected[size_t(l)] = mode == BlendMode::Custom ? blend(BlendSettings(st), color, row[size_t(l)])
                                                                     : blend(mode, color, row[size_t(l)]);
                 }
-            if (mode == BlendMode::Opaque) blend_group<false>(BlendSettings(st), row.data(), 0, 8, write, src);
-            else blend_group<true>(BlendSettings(st), row.data(), 0, 8, write, src);
+            if (mode == BlendMode::Opaque) {
+                blend_group<false>(BlendSettings(st), row.data(), 0, 8, write, src);
+            } else if (mode == BlendMode::Custom) {
+                RowGroups groups;
+                groups.add(0, write, quantize_pack_rgba8(src));
+                blend_row(BlendSettings(st), row.data(), 8, groups);
+            } else {
+                blend_group<true>(BlendSettings(st), row.data(), 0, 8, write, src);
+            }
             ASSERT_EQ(std::memcmp(row.data(), expected.data(), sizeof row), 0) << "mode " << int(mode) << " trial " << trial;
         }
+}
+
+// A whole row of groups (blend_row): each group blended into its own pixels, the row's last
+// group cut by the picture's right edge, pixels outside the groups untouched.
+TEST(Blend, RowOfGroupsEqualsOnePixelAtATime) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> c(0.0f, 1.0f);
+    std::uniform_int_distribution<int> byte(0, 255);
+    for (int trial = 0; trial < 500; ++trial) {
+        RenderState st;
+        st.blend = BlendMode::Custom;
+        BlendEquationState& e = st.blend_equation;
+        auto eq = [&] { return BlendEquation(byte(rng) % 5); };
+        auto factor = [&] { return BlendFactor(byte(rng) % 15); };
+        e = {eq(), eq(), factor(), factor(), factor(), factor(), glm::vec4(c(rng), c(rng), c(rng), c(rng))};
+        const BlendSettings settings(st);
+        const int width = 61;  // the last group has five pixels
+        std::vector<Rgba8> row(static_cast<size_t>(width));
+        for (Rgba8& p : row) p = {uint8_t(byte(rng)), uint8_t(byte(rng)), uint8_t(byte(rng)), uint8_t(byte(rng))};
+        std::vector<Rgba8> expected = row;
+        RowGroups groups;
+        for (int x = 0; x < width; x += 8) {
+            if (byte(rng) < 64) continue;  // a group the triangle misses
+            std::array<simd::f8, 4> src;
+            simd::i8 write;
+            for (int l = 0; l < simd::kLanes; ++l) {
+                for (auto& ch : src) ch[l] = c(rng);
+                write[l] = x + l < width && byte(rng) < 200 ? -1 : 0;
+                if (write[l])
+                    expected[size_t(x + l)] = blend(settings, glm::vec4(src[0][l], src[1][l], src[2][l], src[3][l]), row[size_t(x + l)]);
+            }
+            groups.add(x, write, quantize_pack_rgba8(src));
+        }
+        blend_row(settings, row.data(), width, groups);
+        ASSERT_EQ(std::memcmp(row.data(), expected.data(), row.size() * sizeof(Rgba8)), 0) << "trial " << trial;
+    }
 }
 
 // The general blend (every equation and factor) agrees with the presets it generalizes, and

@@ -19,6 +19,7 @@
 #include <type_traits>
 
 #include "softraster/framebuffer.h"
+#include "softraster/pipeline/pipeline_types.h"
 #include "softraster/pipeline/simd.h"
 #include "softraster/render_state.h"
 
@@ -172,7 +173,8 @@ inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c) {
 }
 
 // Blends colors c (r, g, b, a lanes) into the group of eight RGBA8 pixels from row[x] on
-// (simd.h), where `write` is set: the same arithmetic as blend() above, lane by lane.
+// (simd.h), where `write` is set: the same arithmetic as blend() above, lane by lane, for
+// opaque draws and the presets (Custom draws blend a row at a time, blend_row below).
 template <bool Blended>
 inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
     using simd::i8;
@@ -185,13 +187,6 @@ inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int wi
     const i8 sr = simd::quantize_unorm8(c[0]), sg = simd::quantize_unorm8(c[1]), sb = simd::quantize_unorm8(c[2]),
              sa = simd::quantize_unorm8(c[3]);
     const i8 dr = old & 255, dg = (old >> 8) & 255, db = (old >> 16) & 255, da = (old >> 24) & 255;
-    if (mode == BlendMode::Custom) {  // every equation and factor, eight lanes at once
-        const Rgba8 k = settings.constant;
-        const auto out = blend_channels<i8>(settings, {sr, sg, sb, sa}, {dr, dg, db, da},
-                                            {simd::splat_i(k.r), simd::splat_i(k.g), simd::splat_i(k.b), simd::splat_i(k.a)});
-        simd::store_group(row, x, width, simd::select(write, out[0] | (out[1] << 8) | (out[2] << 16) | (out[3] << 24), old));
-        return;
-    }
     i8 r, g, b, a;
     if (mode == BlendMode::Alpha) {
         const i8 inv = 255 - sa;
@@ -211,6 +206,96 @@ inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int wi
     b = b > max ? max : b;
     a = a > max ? max : a;
     simd::store_group(row, x, width, simd::select(write, r | (g << 8) | (b << 16) | (a << 24), old));
+}
+
+// ---- every equation and factor, a row at a time
+//
+// Choosing a factor or an equation is a switch; taken per channel for each group of eight
+// pixels, that is twelve jumps per group, and the choices never change within a draw. So a
+// Custom draw's groups of a row (at most a tile's width) are shaded first, their colors kept
+// here, and blended together: each switch then runs once per channel and row, around a loop
+// over the groups (blend_factor and blend_channel with the choice a constant).
+
+// The shaded groups of one row, waiting to be blended.
+struct RowGroups {
+    static constexpr int kMax = kTileSize / simd::kLanes;
+    int count = 0;
+    std::array<int, kMax> x;             // each group's first pixel
+    std::array<simd::i8, kMax> color;    // packed RGBA8 (quantize_pack_rgba8)
+    std::array<simd::i8, kMax> write;    // lanes to write
+    void add(int at, simd::i8 lanes, simd::i8 packed) {
+        x[size_t(count)] = at, write[size_t(count)] = lanes, color[size_t(count)] = packed;
+        ++count;
+    }
+};
+
+// Calls f.template operator()<F>() with the run-time factor (equation) as a constant.
+template <class F>
+inline void with_blend_factor(BlendFactor f, F&& fn) {
+    switch (f) {
+#define SOFTRASTER_FACTOR_CASE(name) \
+    case BlendFactor::name: return fn.template operator()<BlendFactor::name>();
+        SOFTRASTER_FACTOR_CASE(Zero) SOFTRASTER_FACTOR_CASE(One) SOFTRASTER_FACTOR_CASE(SrcColor)
+        SOFTRASTER_FACTOR_CASE(OneMinusSrcColor) SOFTRASTER_FACTOR_CASE(DstColor) SOFTRASTER_FACTOR_CASE(OneMinusDstColor)
+        SOFTRASTER_FACTOR_CASE(SrcAlpha) SOFTRASTER_FACTOR_CASE(OneMinusSrcAlpha) SOFTRASTER_FACTOR_CASE(DstAlpha)
+        SOFTRASTER_FACTOR_CASE(OneMinusDstAlpha) SOFTRASTER_FACTOR_CASE(ConstantColor)
+        SOFTRASTER_FACTOR_CASE(OneMinusConstantColor) SOFTRASTER_FACTOR_CASE(ConstantAlpha)
+        SOFTRASTER_FACTOR_CASE(OneMinusConstantAlpha) SOFTRASTER_FACTOR_CASE(SrcAlphaSaturate)
+#undef SOFTRASTER_FACTOR_CASE
+    }
+}
+template <class F>
+inline void with_blend_equation(BlendEquation e, F&& fn) {
+    switch (e) {
+        case BlendEquation::Add: return fn.template operator()<BlendEquation::Add>();
+        case BlendEquation::Subtract: return fn.template operator()<BlendEquation::Subtract>();
+        case BlendEquation::ReverseSubtract: return fn.template operator()<BlendEquation::ReverseSubtract>();
+        case BlendEquation::Min: return fn.template operator()<BlendEquation::Min>();
+        case BlendEquation::Max: return fn.template operator()<BlendEquation::Max>();
+    }
+}
+
+// Blends the row's groups into `row` (of `width` pixels) with every equation and factor,
+// under the color mask: the same bytes as blend(BlendSettings, ...) pixel by pixel.
+inline void blend_row(const BlendSettings& b, Rgba8* row, int width, const RowGroups& groups) {
+    using simd::i8;
+    constexpr size_t kMax = RowGroups::kMax;
+    const size_t n = size_t(groups.count);
+    // Channel-planar copies: s[c][g], d[c][g], and the constant's channels as vectors.
+    std::array<std::array<i8, kMax>, 4> s, d, out;
+    std::array<i8, kMax> old;
+    for (size_t g = 0; g < n; ++g) {
+        old[g] = simd::load_group<i8>(row, groups.x[g], width);
+        for (size_t c = 0; c < 4; ++c) {
+            s[c][g] = (groups.color[g] >> int(8 * c)) & 255;
+            d[c][g] = (old[g] >> int(8 * c)) & 255;
+        }
+    }
+    const std::array<i8, 4> k{simd::splat_i(b.constant.r), simd::splat_i(b.constant.g), simd::splat_i(b.constant.b),
+                              simd::splat_i(b.constant.a)};
+    std::array<i8, kMax> sf, df;
+    for (size_t c = 0; c < 4; ++c) {
+        if (!(b.color_mask & (1u << c))) {
+            out[c] = d[c];
+            continue;
+        }
+        const bool alpha = c == 3;
+        auto factors = [&](BlendFactor f, std::array<i8, kMax>& into) {
+            with_blend_factor(f, [&]<BlendFactor F>() {
+                for (size_t g = 0; g < n; ++g)
+                    into[g] = blend_factor<i8>(F, {s[0][g], s[1][g], s[2][g], s[3][g]}, {d[0][g], d[1][g], d[2][g], d[3][g]}, k, c);
+            });
+        };
+        factors(alpha ? b.eq.src_alpha : b.eq.src_rgb, sf);
+        factors(alpha ? b.eq.dst_alpha : b.eq.dst_rgb, df);
+        with_blend_equation(alpha ? b.eq.alpha : b.eq.rgb, [&]<BlendEquation E>() {
+            for (size_t g = 0; g < n; ++g) out[c][g] = blend_channel<i8>(E, s[c][g], sf[g], d[c][g], df[g]);
+        });
+    }
+    for (size_t g = 0; g < n; ++g) {
+        const i8 packed = out[0][g] | (out[1][g] << 8) | (out[2][g] << 16) | (out[3][g] << 24);
+        simd::store_group(row, groups.x[g], width, simd::select(groups.write[g], packed, old[g]));
+    }
 }
 
 }  // namespace softraster

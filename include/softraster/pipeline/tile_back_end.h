@@ -174,6 +174,7 @@ struct TileBackEnd {
             const f8 j = splat(float(y - t.origin_y));
             float* depth_row = fb.depth_data() + fb.sample_index(0, y);
             Rgba8* color_row = fb.color_data() + fb.sample_index(0, y);
+            RowGroups pending;  // (Custom blending only)
             for_each_group(x_begin, x_end, [&](int x, i8 covered) {
                 const f8 i = to_float(kLaneIndex) + float(x - t.origin_x);
                 const f8 z = interpolate_depth(t, i, j);
@@ -186,8 +187,19 @@ struct TileBackEnd {
                 if (!any(pass)) return;
                 if (!blend.color_mask) return;  // (a stencil or depth pass only: no fragment to shade)
                 shaded += unsigned(__builtin_popcount(bits(pass)));
+                if constexpr (Blended) {
+                    if (blend.mode == BlendMode::Custom) {  // shaded now, blended with the row's other groups
+                        std::array<f8, 4> rgba;
+                        shader.fragment_batch(interpolate_perspective<Flat>(t, i, j), z, t.front_facing, rgba);
+                        pending.add(x, pass, quantize_pack_rgba8(rgba));
+                        return;
+                    }
+                }
                 shade_group<Blended>(shader, blend, color_row, x, width, pass, interpolate_perspective<Flat>(t, i, j), z, t.front_facing);
             });
+            if constexpr (Blended) {
+                if (pending.count > 0) blend_row(blend, color_row, width, pending);
+            }
         });
         return shaded;
     }
