@@ -177,13 +177,34 @@ Mesh load_obj(const std::filesystem::path& path) {
     ObjReader r;
     r.name = path.string();
     const std::string text = read_whole_file(path);
-    size_t pos = 0;
+    // As common tools write them: a UTF-8 byte-order mark, CRLF or LF line ends, tabs
+    // (split_tokens), and a backslash at a line's end continuing the statement on the next.
+    size_t pos = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+    std::string joined;  // a statement continued over several lines
+    size_t physical_line = 0;
     while (pos < text.size()) {
-        size_t end = text.find('\n', pos);
-        if (end == std::string::npos) end = text.size();
-        ++r.line_no;
-        std::string_view line(text.data() + pos, end - pos);
-        pos = end + 1;
+        r.line_no = physical_line + 1;  // errors name the statement's first line
+        joined.clear();
+        std::string_view line;
+        for (;;) {
+            size_t end = text.find('\n', pos);
+            if (end == std::string::npos) end = text.size();
+            ++physical_line;
+            std::string_view part(text.data() + pos, end - pos);
+            pos = end + 1;
+            while (!part.empty() && (part.back() == '\r' || part.back() == ' ' || part.back() == '\t')) part.remove_suffix(1);
+            const bool continued = part.ends_with('\\') && pos < text.size();
+            if (continued) part.remove_suffix(1);
+            if (!continued && joined.empty()) {  // (the usual case: no copy)
+                line = part;
+                break;
+            }
+            joined.append(part).push_back(' ');
+            if (!continued) {
+                line = joined;
+                break;
+            }
+        }
         if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
         if (line.find('\0') != std::string_view::npos) r.fail("binary data (is this an OBJ file?)");
         const auto tok = split_tokens(line);

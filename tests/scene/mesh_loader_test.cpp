@@ -188,3 +188,17 @@ TEST(PlyLoader, NoFacesDrawsNothing) {
                                                     "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n"));
     EXPECT_EQ(m.triangle_count(), 0u);
 }
+
+// OBJ files as common tools write them: a UTF-8 byte-order mark, CRLF line ends, tabs,
+// backslash continuations, and o/g/s/usemtl/mtllib statements; an error in a continued
+// statement names its first line.
+TEST(ObjLoader, FilesAsToolsWriteThem) {
+    const std::string text = "\xEF\xBB\xBF# exported\r\nmtllib a.mtl\r\no Cube\r\ng side\r\nv\t0 0 0\r\nv 1 0 0\r\n"
+                             "v 1 1 0 \\\r\n\r\nv 0 1 0\r\nusemtl red\r\ns 1\r\nf 1 2 \\\r\n  3 4\r\ns off\r\n";
+    const Mesh m = load_obj(write_temp("tools.obj", text));
+    ASSERT_EQ(m.indices.size(), 6u);  // one quad, two triangles
+    EXPECT_EQ(m.vertices.size(), 6u);  // (face normals: three vertices per triangle)
+    EXPECT_EQ(m.vertices[2].position, glm::vec3(1, 1, 0));
+    const std::string error = error_of([] { load_obj(write_temp("cont.obj", "v 0 0 0\nf 1 \\\n 2 x\n")); });
+    EXPECT_NE(error.find("cont.obj:2:"), std::string::npos) << error;
+}
