@@ -171,43 +171,42 @@ struct ObjReader {
     }
 };
 
+// The next statement of an OBJ text from `pos` on, as common tools write them: LF or CRLF
+// line ends, and a backslash at a line's end continuing the statement on the next line.
+// Advances pos and `lines` (the physical lines read); a continued statement is joined in
+// `joined`, any other is a view of the text.
+std::string_view next_statement(const std::string& text, size_t& pos, size_t& lines, std::string& joined) {
+    joined.clear();
+    for (;;) {
+        size_t end = text.find('\n', pos);
+        if (end == std::string::npos) end = text.size();
+        ++lines;
+        std::string_view part(text.data() + pos, end - pos);
+        pos = end + 1;
+        while (!part.empty() && (part.back() == '\r' || part.back() == ' ' || part.back() == '\t')) part.remove_suffix(1);
+        const bool continued = part.ends_with('\\') && pos < text.size();
+        if (!continued && joined.empty()) return part;  // (the usual case: no copy)
+        if (continued) part.remove_suffix(1);
+        joined.append(part).push_back(' ');
+        if (!continued) return joined;
+    }
+}
+
 }  // namespace
 
 Mesh load_obj(const std::filesystem::path& path) {
     ObjReader r;
     r.name = path.string();
     const std::string text = read_whole_file(path);
-    // As common tools write them: a UTF-8 byte-order mark, CRLF or LF line ends, tabs
-    // (split_tokens), and a backslash at a line's end continuing the statement on the next.
-    size_t pos = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
-    std::string joined;  // a statement continued over several lines
-    size_t physical_line = 0;
+    size_t pos = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;  // a UTF-8 byte-order mark
+    std::string joined;
+    size_t lines = 0;
     while (pos < text.size()) {
-        r.line_no = physical_line + 1;  // errors name the statement's first line
-        joined.clear();
-        std::string_view line;
-        for (;;) {
-            size_t end = text.find('\n', pos);
-            if (end == std::string::npos) end = text.size();
-            ++physical_line;
-            std::string_view part(text.data() + pos, end - pos);
-            pos = end + 1;
-            while (!part.empty() && (part.back() == '\r' || part.back() == ' ' || part.back() == '\t')) part.remove_suffix(1);
-            const bool continued = part.ends_with('\\') && pos < text.size();
-            if (continued) part.remove_suffix(1);
-            if (!continued && joined.empty()) {  // (the usual case: no copy)
-                line = part;
-                break;
-            }
-            joined.append(part).push_back(' ');
-            if (!continued) {
-                line = joined;
-                break;
-            }
-        }
+        r.line_no = lines + 1;  // errors name the statement's first line
+        std::string_view line = next_statement(text, pos, lines, joined);
         if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
         if (line.find('\0') != std::string_view::npos) r.fail("binary data (is this an OBJ file?)");
-        const auto tok = split_tokens(line);
+        const auto tok = split_tokens(line);  // (tabs separate too)
         if (!tok.empty()) r.statement(tok);
     }
     return r.build();
