@@ -5,10 +5,12 @@ set -euo pipefail
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 pkgs=(cmake ninja-build g++ pkg-config python3
-      libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev libopenexr-dev libpng-dev libnetpbm-dev)
+      libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev libopenexr-dev libpng-dev libnetpbm-dev
+      libopenimageio-dev libassimp-dev)
 if [ "${1:-}" = "--tests" ]; then
-  # GoogleTest and Google Benchmark for the suite; OSMesa (Mesa llvmpipe) is the test-only reference.
-  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev)
+  # GoogleTest and Google Benchmark for the suite; OSMesa (Mesa llvmpipe) is the test-only reference;
+  # assimp-testmodels: the corpus of real model files the thumbnails test renders.
+  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels)
 fi
 missing=()
 for p in "${pkgs[@]}"; do

@@ -1,6 +1,5 @@
 #include "softraster/io/image_io.h"
 
-#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -8,25 +7,44 @@
 #include <fstream>
 #include <system_error>
 
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+#include <zlib.h>
+
 #include "io/read_file.h"
 #include "softraster/error.h"
 
 namespace softraster {
 namespace {
 
-enum class Format { Png, Jpeg, Bmp, Tga, Unknown };
+// OpenImageIO messages can span lines; ours are one line.
+std::string one_line(std::string s) {
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    return s.empty() ? "unknown reason" : s;
+}
 
-Format format_from_extension(const std::filesystem::path& path) {
+enum class Format { Png, Jpeg, Bmp, Tga, Other, Unknown };
+
+std::string lower_extension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+// The four formats of the scene format's version 1 get signature and completeness checks of
+// their own (below); the others are left to the decoder.
+Format format_from_extension(const std::string& ext) {
     if (ext == ".png") return Format::Png;
     if (ext == ".jpg" || ext == ".jpeg") return Format::Jpeg;
     if (ext == ".bmp") return Format::Bmp;
     if (ext == ".tga") return Format::Tga;
+    for (const char* other : {".rgb", ".rgba", ".sgi", ".bw", ".dds", ".tif", ".tiff", ".webp", ".hdr", ".exr"})
+        if (ext == other) return Format::Other;
     return Format::Unknown;
 }
 
-Format format_from_contents(const std::string& b) {
+Format format_from_contents(std::string_view b) {
     auto starts = [&](const char* magic, size_t n) { return b.size() >= n && std::memcmp(b.data(), magic, n) == 0; };
     if (starts("\x89PNG\r\n\x1a\n", 8)) return Format::Png;
     if (starts("\xff\xd8\xff", 3)) return Format::Jpeg;
@@ -44,19 +62,48 @@ const char* format_name(Format f) {
     }
 }
 
-uint32_t le32(const std::string& b, size_t at) {
+uint32_t le32(std::string_view b, size_t at) {
     uint32_t v = 0;
     for (int i = 3; i >= 0; --i) v = (v << 8) | uint8_t(b[at + size_t(i)]);
     return v;
 }
 
-// stb_image reads zeros past the end of a buffer for some formats instead of failing, so a
-// truncated file would decode to a picture with a black band. These checks catch that.
-void check_complete(const std::string& b, Format f, const std::string& name) {
-    if (f == Format::Jpeg) {
+// Decoders fill the missing part of a truncated file with zeros or gray for some formats
+// (libjpeg warns and goes on), so such a file would decode to a picture with a band of
+// garbage. These checks catch that.
+uint32_t be32(std::string_view b, size_t at) {
+    uint32_t v = 0;
+    for (size_t i = 0; i < 4; ++i) v = (v << 8) | uint8_t(b[at + i]);
+    return v;
+}
+
+// A PNG is a signature and chunks (length, type, data, CRC-32 of type and data) up to IEND
+// (PNG specification, section 5). Walking them finds truncation and damage before libpng
+// does: libpng reports those on stderr itself, and our errors are one line.
+void check_png_chunks(std::string_view b, const std::string& name) {
+    size_t at = 8;
+    while (true) {
+        if (at + 12 > b.size()) throw InputError(name + ": truncated PNG (no IEND chunk)");
+        const uint32_t length = be32(b, at);
+        const std::string_view type = b.substr(at + 4, 4);
+        if (length > b.size() - at - 12) throw InputError(name + ": truncated PNG (chunk " + std::string(type) + ")");
+        for (char c : type)
+            if (!std::isalpha(static_cast<unsigned char>(c))) throw InputError(name + ": corrupt PNG (bad chunk type)");
+        const auto* typed = reinterpret_cast<const Bytef*>(b.data() + at + 4);
+        if (crc32(0, typed, uInt(length + 4)) != be32(b, at + 8 + length))
+            throw InputError(name + ": corrupt PNG (checksum of chunk " + std::string(type) + ")");
+        if (type == "IEND") return;
+        at += 12 + size_t(length);
+    }
+}
+
+void check_complete(std::string_view b, Format f, const std::string& name) {
+    if (f == Format::Png) {
+        check_png_chunks(b, name);
+    } else if (f == Format::Jpeg) {
         // A complete JPEG ends with the EOI marker (FF D9), possibly followed by padding.
         const size_t tail = b.size() > 64 ? b.size() - 64 : 0;
-        if (b.rfind("\xff\xd9", std::string::npos) == std::string::npos || b.rfind("\xff\xd9") < tail)
+        if (b.rfind("\xff\xd9") == std::string_view::npos || b.rfind("\xff\xd9") < tail)
             throw InputError(name + ": truncated JPEG (no end-of-image marker)");
     } else if (f == Format::Bmp) {
         if (b.size() < 54) throw InputError(name + ": truncated BMP header");
@@ -81,28 +128,69 @@ void check_complete(const std::string& b, Format f, const std::string& name) {
     }
 }
 
+
+// The largest picture a texture may be: 16384 x 16384 texels (1 GiB of RGBA8).
+constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
+
+// Decodes with OpenImageIO (one library for every format) to 8-bit RGBA: gray is copied to
+// red, green and blue, a missing alpha is 255, and floating-point pictures (HDR, EXR) are
+// clamped to [0, 1] and scaled, without tone mapping. A file is read from its path; bytes in
+// memory through OpenImageIO's memory reader, which some of its formats (SGI, DDS) lack.
+Image decode(std::string_view bytes, const std::filesystem::path* file, const std::string& name, const std::string& ext) {
+    // Texels as stored: OpenImageIO would premultiply color by alpha (PNG, TGA, TIFF...).
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    OIIO::Filesystem::IOProxy* proxy = &memory;
+    if (!file) config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    // The decoder is chosen by the extension (a memory reader's name only labels messages).
+    auto in = OIIO::ImageInput::open(file ? file->string() : "memory" + ext, &config, file ? nullptr : proxy);
+    if (!in) throw InputError(name + ": cannot decode (" + one_line(OIIO::geterror()) + ")");
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1)
+        throw InputError(name + ": unsupported picture layout (" + std::to_string(spec.width) + "x" +
+                         std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) + " channels)");
+    if (uint64_t(spec.width) * uint64_t(spec.height) > kMaxTexels)
+        throw InputError(name + ": picture too large (" + std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")");
+    const int channels = std::min(spec.nchannels, 4);
+    std::vector<uint8_t> data(size_t(spec.width) * size_t(spec.height) * size_t(channels));
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, data.data()))
+        throw InputError(name + ": corrupt picture (" + one_line(in->geterror()) + ")");
+    Image img(spec.width, spec.height);
+    for (size_t i = 0; i < img.pixels.size(); ++i) {
+        const uint8_t* p = &data[i * size_t(channels)];
+        Rgba8& out = img.pixels[i];
+        if (channels <= 2) out = {p[0], p[0], p[0], channels == 2 ? p[1] : uint8_t(255)};
+        else out = {p[0], p[1], p[2], channels == 4 ? p[3] : uint8_t(255)};
+    }
+    return img;
+}
+
+Image decode_checked(std::string_view bytes, const std::filesystem::path* file, const std::string& name, const std::string& ext) {
+    if (bytes.empty()) throw InputError(name + ": empty file");
+    const Format expected = format_from_extension(ext);
+    if (expected == Format::Unknown)
+        throw InputError(name + ": unsupported image type (expected " + std::string(kImageExtensions) + ")");
+    if (expected != Format::Other) {
+        const Format actual = format_from_contents(bytes);
+        if (actual != expected && !(expected == Format::Tga && actual == Format::Unknown))
+            throw InputError(name + ": not a " + format_name(expected) + " file" +
+                             (actual != Format::Unknown ? std::string(" (contents are ") + format_name(actual) + ")" : ""));
+        check_complete(bytes, expected, name);
+    }
+    return decode(bytes, file, name, ext);
+}
+
 }  // namespace
 
 Image read_image(const std::filesystem::path& path) {
-    const std::string name = path.string();
-    const std::string bytes = read_whole_file(path);
-    if (bytes.empty()) throw InputError(name + ": empty file");
-    const Format expected = format_from_extension(path);
-    if (expected == Format::Unknown)
-        throw InputError(name + ": unsupported image type (expected .png, .jpg, .jpeg, .tga or .bmp)");
-    const Format actual = format_from_contents(bytes);
-    if (actual != expected && !(expected == Format::Tga && actual == Format::Unknown))
-        throw InputError(name + ": not a " + format_name(expected) + " file" +
-                         (actual != Format::Unknown ? std::string(" (contents are ") + format_name(actual) + ")" : ""));
-    check_complete(bytes, expected, name);
-    int w = 0, h = 0, channels = 0;
-    stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h,
-                                          &channels, 4);
-    if (!data) throw InputError(name + ": corrupt " + format_name(expected) + " (" + stbi_failure_reason() + ")");
-    Image img(w, h);
-    std::memcpy(img.pixels.data(), data, size_t(w) * size_t(h) * 4);
-    stbi_image_free(data);
-    return img;
+    return decode_checked(read_whole_file(path), &path, path.string(), lower_extension(path));
+}
+
+Image read_image(std::string_view bytes, const std::string& name, const std::string& type) {
+    std::string ext = "." + type;
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return decode_checked(bytes, nullptr, name, ext);
 }
 
 std::string encode_png(const Image& image) {

@@ -1,7 +1,9 @@
-// Reading and writing image files (PNG, JPEG, TGA, BMP in; PNG out), through stb.
+// Reading and writing image files: PNG, JPEG, TGA, BMP, SGI, DDS, TIFF, WebP, HDR and EXR in
+// (through OpenImageIO), PNG out (through stb).
 #pragma once
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "softraster/image.h"
 
@@ -11,6 +13,13 @@ namespace softraster {
 // The format is taken from the file's contents and must agree with its extension.
 // Throws InputError("<path>: <what is wrong>") for a missing, truncated or corrupt file.
 Image read_image(const std::filesystem::path& path);
+// The same for a file's bytes held in memory (a texture embedded in a model): `type` is the
+// extension without the dot ("png", "jpg"), `name` labels the errors.
+Image read_image(std::string_view bytes, const std::string& name, const std::string& type);
+
+// The extensions read_image accepts, for messages.
+inline constexpr const char* kImageExtensions =
+    ".png, .jpg, .jpeg, .tga, .bmp, .rgb, .rgba, .sgi, .bw, .dds, .tif, .tiff, .webp, .hdr or .exr";
 
 // Writes a PNG all at once: the picture goes to a temporary file that is renamed into place,
 // so a failure never leaves a partial file. Throws std::runtime_error when it cannot write.
