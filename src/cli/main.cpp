@@ -8,7 +8,8 @@
 
 int main(int argc, char** argv) {
     using namespace softraster;
-    CLI::App app{"softraster: a CPU rasterizer that renders scene files (format version 1) to PNG"};
+    CLI::App app{"softraster: a CPU rasterizer that renders scene files (format versions 1 and 2) and model files (glTF, OBJ, FBX, STL...) to pictures"};
+    app.set_version_flag("--version", "softraster " SOFTRASTER_VERSION);
     app.require_subcommand(1);
     app.footer("Run 'softraster COMMAND --help' for a command's options.\n"
                "Exit codes: 0 success, 1 internal error, 2 bad input (scene, mesh, image or flag).");
@@ -20,6 +21,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::cerr << "softraster: error: " << e.what() << " (see softraster --help)\n";

@@ -5,24 +5,21 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <mutex>
 #include <system_error>
+#include <vector>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include <dlfcn.h>
+#include <stb_image.h>
 #include <zlib.h>
 
+#include "io/oiio_module.h"
 #include "io/read_file.h"
 #include "softraster/error.h"
 
 namespace softraster {
 namespace {
 
-// OpenImageIO messages can span lines; ours are one line.
-std::string one_line(std::string s) {
-    std::replace(s.begin(), s.end(), '\n', ' ');
-    while (!s.empty() && s.back() == ' ') s.pop_back();
-    return s.empty() ? "unknown reason" : s;
-}
 
 enum class Format { Png, Jpeg, Bmp, Tga, Other, Unknown };
 
@@ -129,40 +126,68 @@ void check_complete(std::string_view b, Format f, const std::string& name) {
 }
 
 
-// The largest picture a texture may be: 16384 x 16384 texels (1 GiB of RGBA8).
+// The largest picture a texture may be: 2^28 texels (1 GiB of RGBA8).
 constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
 
-// Decodes with OpenImageIO (one library for every format) to 8-bit RGBA: gray is copied to
-// red, green and blue, a missing alpha is 255, and floating-point pictures (HDR, EXR) are
-// clamped to [0, 1] and scaled, without tone mapping. A file is read from its path; bytes in
-// memory through OpenImageIO's memory reader, which some of its formats (SGI, DDS) lack.
-Image decode(std::string_view bytes, const std::filesystem::path* file, const std::string& name, const std::string& ext) {
-    // Texels as stored: OpenImageIO would premultiply color by alpha (PNG, TGA, TIFF...).
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-    OIIO::Filesystem::IOProxy* proxy = &memory;
-    if (!file) config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    // The decoder is chosen by the extension (a memory reader's name only labels messages).
-    auto in = OIIO::ImageInput::open(file ? file->string() : "memory" + ext, &config, file ? nullptr : proxy);
-    if (!in) throw InputError(name + ": cannot decode (" + one_line(OIIO::geterror()) + ")");
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1)
-        throw InputError(name + ": unsupported picture layout (" + std::to_string(spec.width) + "x" +
-                         std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) + " channels)");
-    if (uint64_t(spec.width) * uint64_t(spec.height) > kMaxTexels)
-        throw InputError(name + ": picture too large (" + std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")");
-    const int channels = std::min(spec.nchannels, 4);
-    std::vector<uint8_t> data(size_t(spec.width) * size_t(spec.height) * size_t(channels));
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, data.data()))
-        throw InputError(name + ": corrupt picture (" + one_line(in->geterror()) + ")");
-    Image img(spec.width, spec.height);
-    for (size_t i = 0; i < img.pixels.size(); ++i) {
-        const uint8_t* p = &data[i * size_t(channels)];
-        Rgba8& out = img.pixels[i];
-        if (channels <= 2) out = {p[0], p[0], p[0], channels == 2 ? p[1] : uint8_t(255)};
-        else out = {p[0], p[1], p[2], channels == 4 ? p[3] : uint8_t(255)};
-    }
+// The OpenImageIO module's decode function, opened on first use (oiio_module.h): from
+// $SOFTRASTER_MODULE_DIR, beside the program, from the build and install folders, then the
+// system's library path.
+SoftrasterDecodeFn oiio_decoder(const std::string& name) {
+    static SoftrasterDecodeFn decode = nullptr;
+    static std::once_flag once;
+    std::call_once(once, [] {
+        std::vector<std::string> dirs;
+        if (const char* env = std::getenv("SOFTRASTER_MODULE_DIR")) dirs.emplace_back(env);
+        std::error_code ec;
+        const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+        if (!ec) dirs.push_back(exe.parent_path().string());
+        std::string listed = SOFTRASTER_MODULE_DIRS;
+        for (size_t at = 0; at <= listed.size();) {
+            const size_t colon = std::min(listed.find(':', at), listed.size());
+            if (colon > at) dirs.push_back(listed.substr(at, colon - at));
+            at = colon + 1;
+        }
+        dirs.emplace_back();
+        for (const std::string& dir : dirs) {
+            const std::string file = dir.empty() ? SOFTRASTER_OIIO_MODULE : dir + "/" + SOFTRASTER_OIIO_MODULE;
+            if (void* module = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL)) {
+                decode = reinterpret_cast<SoftrasterDecodeFn>(dlsym(module, SOFTRASTER_OIIO_DECODE));
+                if (decode) return;
+            }
+        }
+    });
+    if (!decode)
+        throw InputError(name + ": this picture format needs softraster's OpenImageIO module (" SOFTRASTER_OIIO_MODULE
+                                "), which was not found; set SOFTRASTER_MODULE_DIR to its folder");
+    return decode;
+}
+
+Image decode_with_oiio(std::string_view bytes, const std::filesystem::path* file, const std::string& name, const std::string& ext) {
+    SoftrasterDecoded out;
+    oiio_decoder(name)(file ? file->c_str() : nullptr, bytes.data(), bytes.size(), ext.c_str(), &out);
+    if (!out.rgba) throw InputError(name + ": " + out.error);
+    Image img(out.width, out.height);
+    std::memcpy(img.pixels.data(), out.rgba, img.pixels.size() * 4);
+    std::free(out.rgba);
+    return img;
+}
+
+// PNG, JPEG, TGA and BMP, the formats of nearly every asset's textures, decode with stb_image
+// in the program itself; the others through the OpenImageIO module.
+Image decode(std::string_view bytes, const std::filesystem::path* file, const std::string& name, const std::string& ext,
+             Format format) {
+    if (format == Format::Other) return decode_with_oiio(bytes, file, name, ext);
+    int w = 0, h = 0, channels = 0;
+    if (!stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h, &channels))
+        throw InputError(name + ": corrupt " + format_name(format) + " (" + stbi_failure_reason() + ")");
+    if (uint64_t(w) * uint64_t(h) > kMaxTexels)
+        throw InputError(name + ": picture too large (" + std::to_string(w) + "x" + std::to_string(h) + ")");
+    stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h,
+                                          &channels, 4);
+    if (!data) throw InputError(name + ": corrupt " + format_name(format) + " (" + stbi_failure_reason() + ")");
+    Image img(w, h);
+    std::memcpy(img.pixels.data(), data, size_t(w) * size_t(h) * 4);
+    stbi_image_free(data);
     return img;
 }
 
@@ -178,7 +203,7 @@ Image decode_checked(std::string_view bytes, const std::filesystem::path* file, 
                              (actual != Format::Unknown ? std::string(" (contents are ") + format_name(actual) + ")" : ""));
         check_complete(bytes, expected, name);
     }
-    return decode(bytes, file, name, ext);
+    return decode(bytes, file, name, ext, expected);
 }
 
 }  // namespace

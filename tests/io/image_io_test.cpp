@@ -78,8 +78,9 @@ TEST(ImageIo, ReadsEveryTextureFormat) {
             const Image img = read_image(path);
             EXPECT_EQ(img.width, 5);
             EXPECT_EQ(img.height, 3);
-            if (c.channels == 4)
+            if (c.channels == 4) {
                 for (size_t i = 0; i < 15; ++i) EXPECT_EQ(img.pixels[i].a, pixels[i * 4 + 3]) << "texel " << i;
+            }
             continue;
         }
         expect_texels(read_image(path), pixels, c.channels);

@@ -1,5 +1,6 @@
-// Reading and writing image files: PNG, JPEG, TGA, BMP, SGI, DDS, TIFF, WebP, HDR and EXR in
-// (through OpenImageIO), PNG out (through stb).
+// Reading and writing image files: PNG, JPEG, TGA, BMP in through stb_image; SGI, DDS, TIFF,
+// WebP, HDR and EXR through OpenImageIO (a module opened when first needed, src/io/oiio_module.h);
+// PNG out through stb.
 #pragma once
 #include <filesystem>
 #include <string>
