@@ -4,10 +4,12 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/model_options.h"
 #include "cli/output.h"
 #include "softraster/error.h"
 #include "softraster/io/image_write.h"
 #include "softraster/pipeline/resolve.h"
+#include "softraster/scene/model.h"
 #include "softraster/scene/scene_renderer.h"
 
 namespace softraster::cli {
@@ -23,16 +25,29 @@ void write_buffer(const GrayImage<T>& picture, const std::string& path) {
     std::fprintf(stderr, "wrote %s (%dx%d)\n", path.c_str(), picture.width, picture.height);
 }
 
+// A model file's scene: textures that cannot be read are drawn without (a warning line).
+Scene picture_model(const std::filesystem::path& path, const ModelOptions& options) {
+    const ModelPicture picture = options.picture(512);
+    const Model model = load_model(path, MissingTexture::Warn);
+    for (const std::string& w : model.warnings) std::fprintf(stderr, "softraster: warning: %s\n", w.c_str());
+    if (options.verbose)
+        for (const std::string& what : model.ignored) std::fprintf(stderr, "%s: not drawn: %s\n", path.string().c_str(), what.c_str());
+    return model_scene(model, picture);
+}
+
 }  // namespace
 
 Run add_render_command(CLI::App& app) {
     struct Options {
         std::string scene, out, depth_out, stencil_out;
         int threads = 0;
+        ModelOptions model;
     };
     auto opt = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("render", "Render a scene file to a picture (PNG, TGA, PPM or EXR)");
-    cmd->add_option("scene", opt->scene, "Scene file (.json)")->required();
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene file or a model file to a picture (PNG, TGA, PPM or EXR)");
+    cmd->add_option("input", opt->scene,
+                    "Scene file (.json), or a model file (glTF, GLB, OBJ, FBX, STL, DAE, 3DS, PLY...) to frame and light automatically")
+        ->required();
     cmd->add_option("-o,--output", opt->out,
                     "Output picture, format by extension: .png, .tga, .ppm, .exr (float, linear) (default: the scene's name with .png)");
     cmd->add_option("--depth-out", opt->depth_out,
@@ -41,8 +56,12 @@ Run add_render_command(CLI::App& app) {
     cmd->add_option("--threads", opt->threads, "Worker threads (0: one per core); the picture is the same for any count")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
-    cmd->footer("Example: softraster render scenes/tri_basic.json -o tri.png\nThe scene format: docs/scene-format.md in the softraster sources.");
-    return [opt] {
+    add_model_options(*cmd, opt->model, 512);
+    cmd->footer("Examples:\n  softraster render scenes/tri_basic.json -o tri.png\n"
+                "  softraster render duck.glb -o duck.png --size 800x600 --view front\n"
+                "The model options (--size ... --camera) apply to model files only.\n"
+                "The scene format: docs/scene-format.md in the softraster sources.");
+    return [opt, cmd] {
         const std::filesystem::path scene_path = opt->scene;
         const std::filesystem::path out =
             opt->out.empty() ? std::filesystem::path(scene_path.stem().string() + ".png") : std::filesystem::path(opt->out);
@@ -50,7 +69,10 @@ Run add_render_command(CLI::App& app) {
         if (!opt->depth_out.empty()) check_output_path(opt->depth_out, {PictureFormat::Png, PictureFormat::Exr});
         if (!opt->stencil_out.empty()) check_output_path(opt->stencil_out, {PictureFormat::Png});
         const auto start = std::chrono::steady_clock::now();
-        const Scene scene = load_scene(scene_path);
+        const bool is_scene = scene_path.extension() == ".json";
+        if (is_scene && opt->model.any_given(*cmd))
+            throw InputError(scene_path.string() + ": --size, --view, --background, --samples, --shading and --camera are for model files; a scene file sets these itself");
+        const Scene scene = is_scene ? load_scene(scene_path) : picture_model(scene_path, opt->model);
         const SceneRenderer renderer(scene, thread_count(opt->threads));
         Framebuffer fb = renderer.make_framebuffer();
         renderer.render(fb);

@@ -1,0 +1,61 @@
+// Model files as people have them (glTF 2.0, OBJ with MTL, FBX, STL, COLLADA, 3DS, PLY and
+// the other formats assimp reads), turned into the scene's own objects: what `render MODEL`,
+// `thumbnails` and a scene's "model" key draw.
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "softraster/scene/scene.h"
+
+namespace softraster {
+
+struct Model {
+    // One object per mesh per node that places it, with the node's world transform. A mesh
+    // placed by several nodes (instancing) is one Mesh shared by their objects, not copies.
+    std::vector<SceneObject> objects;
+    std::vector<Camera> cameras;         // the file's cameras, placed by their nodes
+    std::vector<std::string> warnings;   // e.g. a texture that could not be read (drawn untextured)
+    std::vector<std::string> ignored;    // what the file has that the pipeline does not draw yet
+};
+
+// What to do with a texture that is missing or unreadable: fail (scene files), or draw the
+// material untextured and add a warning (render MODEL, thumbnails).
+enum class MissingTexture { Fail, Warn };
+
+// Reads a model file through assimp. Throws InputError("<path>: <what>") for a file it cannot
+// use (unreadable, malformed, no triangles, non-finite positions...).
+Model load_model(const std::filesystem::path& path, MissingTexture missing = MissingTexture::Fail);
+
+// Whether the file's extension is one load_model reads (case-insensitive).
+bool is_model_file(const std::filesystem::path& path);
+
+// The smallest sphere around the objects' transformed vertices that this cheap rule finds:
+// centered on their bounding box, radius to the farthest vertex. None when nothing is drawn.
+struct BoundingSphere {
+    glm::vec3 center{0.0f};
+    float radius = 0.0f;
+};
+std::optional<BoundingSphere> bounding_sphere(const std::vector<SceneObject>& objects);
+
+// How `render MODEL` and `thumbnails` picture a model.
+enum class ModelView { ThreeQuarter, Front, Back, Left, Right, Top, Bottom, Iso };
+struct ModelPicture {
+    int width = 512, height = 512;
+    glm::vec4 background{0.2f, 0.2f, 0.25f, 1.0f};
+    int samples = 4;
+    ModelView view = ModelView::ThreeQuarter;
+    std::optional<Shading> shading;  // none: each material's own (lit, or unlit where the file says)
+    int camera = -1;                 // >= 0: the file's camera with this index instead of framing
+};
+
+// A scene that shows the model: a perspective camera (30 degrees) whose view the model's
+// bounding sphere fills, from the chosen side (+y is up), and a default light rig (a key
+// light from the upper left of the camera, a fill light from the right, ambient). Throws
+// InputError when `picture.camera` names no camera of the file.
+Scene model_scene(const Model& model, const ModelPicture& picture);
+
+}  // namespace softraster

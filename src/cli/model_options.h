@@ -1,0 +1,27 @@
+// The options of the commands that picture model files (render MODEL, thumbnails): size,
+// view, background, samples, shading, the file's camera.
+#pragma once
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "softraster/scene/model.h"
+
+namespace softraster::cli {
+
+struct ModelOptions {
+    std::string size, view = "three-quarter", background, shading;
+    int samples = 4, camera = -1;
+    bool verbose = false;
+
+    // The picture these options describe; `default_size` when --size is not given.
+    // Throws InputError for a value that cannot be used.
+    ModelPicture picture(int default_size) const;
+    // Whether any option that only models take was given (for `render SCENE.json`).
+    bool any_given(const CLI::App& cmd) const;
+};
+
+void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size);
+
+}  // namespace softraster::cli

@@ -1,0 +1,378 @@
+// Model files through assimp: its scene (meshes, materials, a node tree, embedded textures)
+// becomes our objects. Each aiMesh is converted once and shared by every node that places it.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <assimp/GltfMaterial.h>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "softraster/error.h"
+#include "softraster/io/image_io.h"
+#include "softraster/scene/model.h"
+
+namespace softraster {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Deeper node trees than this are taken for a broken (or hostile) file.
+constexpr int kMaxNodeDepth = 256;
+// Objects a file may place in all (a node tree that instances a mesh exponentially often).
+constexpr size_t kMaxObjects = 1u << 20;
+
+std::string one_line(std::string s) {
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
+    return s;
+}
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+// assimp's matrices are row-major (a1 a2 a3 a4 is the first row); glm's are column-major.
+glm::mat4 to_glm(const aiMatrix4x4& m) {
+    glm::mat4 r;
+    for (unsigned row = 0; row < 4; ++row)
+        for (unsigned col = 0; col < 4; ++col) r[int(col)][int(row)] = m[row][col];
+    return r;
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+bool finite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+// KHR_texture_transform as assimp stores it (aiUVTransform), back in glTF's terms, applied to
+// texture coordinates. assimp flipped v (v' = 1 - v) and moved the rotation's center into
+// mTranslation; undoing that gives glTF's offset o, rotation r and scale s, and glTF's
+// uv' = T(o) R(r) S(s) uv in glTF's coordinates, v flipped around it. R turns the UVs
+// counter-clockwise as the extension says, which with glTF's v pointing down is
+// (u, v) -> (u cos r + v sin r, -u sin r + v cos r) (checked on the Khronos test model
+// TextureTransformTest: the arrows point at the "correct" marks).
+glm::vec2 apply_uv_transform(const aiUVTransform& t, glm::vec2 uv) {
+    const float r = -t.mRotation;
+    const float c = std::cos(r), s = std::sin(r);
+    const glm::vec2 scale(t.mScaling.x, t.mScaling.y);
+    const glm::vec2 offset(t.mTranslation.x - 0.5f * scale.x * (-c + s + 1.0f),
+                           -(t.mTranslation.y - (0.5f * scale.y * (s + c - 1.0f) + 1.0f - scale.y)));
+    const glm::vec2 g(uv.x * scale.x, (1.0f - uv.y) * scale.y);
+    const glm::vec2 rotated(c * g.x + s * g.y, -s * g.x + c * g.y);
+    const glm::vec2 moved = rotated + offset;
+    return {moved.x, 1.0f - moved.y};
+}
+
+// What a material needs from the mesh it is drawn on.
+struct MaterialUse {
+    Material material;
+    CullMode cull = CullMode::None;
+    unsigned uv_set = 0;                     // the texture coordinate set the base color texture reads
+    std::optional<aiUVTransform> transform;  // KHR_texture_transform
+};
+
+class Loader {
+public:
+    Loader(const aiScene& scene, const fs::path& path, MissingTexture missing)
+        : scene_(scene), path_(path), name_(path.string()), missing_(missing) {}
+
+    Model load() {
+        for (unsigned i = 0; i < scene_.mNumMaterials; ++i) materials_.push_back(read_material(*scene_.mMaterials[i]));
+        for (unsigned i = 0; i < scene_.mNumMeshes; ++i) meshes_.push_back(read_mesh(i));
+        place(*scene_.mRootNode, glm::mat4(1.0f), 0);
+        if (model_.objects.empty()) fail("nothing to draw (no triangles, lines or points)");
+        for (unsigned i = 0; i < scene_.mNumCameras; ++i) read_camera(*scene_.mCameras[i]);
+        note_ignored();
+        return std::move(model_);
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) const { throw InputError(name_ + ": " + what); }
+
+    MaterialUse read_material(const aiMaterial& m) {
+        MaterialUse use;
+        Material& mat = use.material;
+        aiColor4D color(1, 1, 1, 1);
+        if (m.Get(AI_MATKEY_BASE_COLOR, color) != AI_SUCCESS && m.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
+            float opacity = 1.0f;
+            if (m.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) color.a = opacity;
+        }
+        mat.color = glm::clamp(glm::vec4(color.r, color.g, color.b, color.a), 0.0f, 1.0f);
+        if (!std::isfinite(color.r + color.g + color.b + color.a)) mat.color = glm::vec4(1.0f);
+
+        aiShadingMode shading = aiShadingMode_Gouraud;
+        if (m.Get(AI_MATKEY_SHADING_MODEL, shading) == AI_SUCCESS && shading == aiShadingMode_Unlit)
+            mat.shading = Shading::Unlit;
+
+        aiString alpha_mode;
+        if (m.Get(AI_MATKEY_GLTF_ALPHAMODE, alpha_mode) == AI_SUCCESS) {
+            const std::string mode = alpha_mode.C_Str();
+            if (mode == "BLEND") mat.blend = BlendMode::Alpha;
+            if (mode == "MASK") {
+                float cutoff = 0.5f;
+                m.Get(AI_MATKEY_GLTF_ALPHACUTOFF, cutoff);
+                mat.alpha_cutoff = std::isfinite(cutoff) ? cutoff : 0.5f;
+            }
+        } else if (mat.color.a < 1.0f) {
+            mat.blend = BlendMode::Alpha;  // formats without alpha modes: translucent when opacity < 1
+        }
+        // Single-sided only where the file says so (glTF's doubleSided false); other formats
+        // rarely state it and their windings are often inconsistent, so nothing is culled.
+        int two_sided = 1;
+        if (m.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS && !two_sided) use.cull = CullMode::Back;
+
+        for (aiTextureType type : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}) {
+            aiString file;
+            if (m.GetTextureCount(type) == 0 || m.GetTexture(type, 0, &file) != AI_SUCCESS) continue;
+            m.Get(AI_MATKEY_UVWSRC(type, 0), use.uv_set);
+            aiUVTransform transform;
+            if (m.Get(AI_MATKEY_UVTRANSFORM(type, 0), transform) == AI_SUCCESS) use.transform = transform;
+            aiTextureMapMode wrap = aiTextureMapMode_Wrap;
+            if (m.Get(AI_MATKEY_MAPPINGMODE_U(type, 0), wrap) == AI_SUCCESS && wrap == aiTextureMapMode_Clamp)
+                mat.wrap = Wrap::Clamp;
+            if (wrap == aiTextureMapMode_Mirror) ignored_.insert("mirrored texture wrapping (drawn as repeat)");
+            int mag_filter = 0;
+            if (m.Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0), mag_filter) == AI_SUCCESS && mag_filter == 9728)
+                mat.filter = Filter::Nearest;  // GL_NEAREST
+            mat.texture = texture(file.C_Str());
+            break;
+        }
+        if (m.GetTextureCount(aiTextureType_NORMALS) > 0) ignored_.insert("normal maps");
+        if (m.GetTextureCount(aiTextureType_METALNESS) > 0 || m.GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS) > 0)
+            ignored_.insert("metallic-roughness maps");
+        if (m.GetTextureCount(aiTextureType_LIGHTMAP) > 0 || m.GetTextureCount(aiTextureType_AMBIENT_OCCLUSION) > 0)
+            ignored_.insert("occlusion maps");
+        if (m.GetTextureCount(aiTextureType_EMISSIVE) > 0) ignored_.insert("emissive maps");
+        return use;
+    }
+
+    // A texture by the name the material gives: "*N" or a name assimp knows as embedded, else
+    // a file beside the model (Windows separators and absolute paths from the author's
+    // machine are common: the file name alone is tried last).
+    std::shared_ptr<const Texture> texture(const std::string& ref) {
+        auto [slot, fresh] = textures_.try_emplace(ref);
+        if (!fresh) return slot->second;
+        try {
+            if (const aiTexture* embedded = scene_.GetEmbeddedTexture(ref.c_str())) {
+                slot->second = std::make_shared<Texture>(embedded_image(*embedded, ref));
+            } else {
+                std::string rel = ref;
+                std::replace(rel.begin(), rel.end(), '\\', '/');
+                fs::path file = path_.parent_path() / rel;
+                if (!fs::exists(file) && fs::exists(path_.parent_path() / fs::path(rel).filename()))
+                    file = path_.parent_path() / fs::path(rel).filename();
+                slot->second = std::make_shared<Texture>(read_image(file));
+            }
+        } catch (const InputError& e) {
+            if (missing_ == MissingTexture::Fail) fail("texture '" + ref + "': " + e.what());
+            model_.warnings.push_back(name_ + ": texture '" + ref + "' not drawn (" + e.what() + ")");
+        }
+        return slot->second;
+    }
+
+    Image embedded_image(const aiTexture& t, const std::string& ref) const {
+        const std::string label = name_ + " (embedded texture " + ref + ")";
+        if (t.mHeight == 0) {  // compressed: mWidth bytes of a PNG, JPEG... file
+            const std::string_view bytes(reinterpret_cast<const char*>(t.pcData), t.mWidth);
+            std::string hint = lower(t.achFormatHint);
+            const std::string ext = fs::path(t.mFilename.C_Str()).extension().string();
+            if (hint.empty() && !ext.empty()) hint = lower(ext.substr(1));
+            return read_image(bytes, label, hint);
+        }
+        if (uint64_t(t.mWidth) * t.mHeight > (uint64_t(1) << 28)) throw InputError(label + ": picture too large");
+        Image img(int(t.mWidth), int(t.mHeight));
+        for (size_t i = 0; i < img.pixels.size(); ++i) {
+            const aiTexel& x = t.pcData[i];
+            img.pixels[i] = {x.r, x.g, x.b, x.a};
+        }
+        return img;
+    }
+
+    struct MeshUse {
+        std::shared_ptr<const Mesh> mesh;  // none: nothing drawable
+        Topology primitive = Topology::Triangles;
+    };
+
+    MeshUse read_mesh(unsigned index) {
+        const aiMesh& in = *scene_.mMeshes[index];
+        const std::string which = "mesh " + std::to_string(index) + (in.mName.length ? " ('" + std::string(in.mName.C_Str()) + "')" : "");
+        if (in.mMaterialIndex >= materials_.size()) fail(which + ": material index out of range");
+        const MaterialUse& use = materials_[in.mMaterialIndex];
+        if (in.mNumBones > 0) ignored_.insert("skins (drawn in the bind pose)");
+        if (in.mNumAnimMeshes > 0) ignored_.insert("morph targets");
+        auto mesh = std::make_shared<Mesh>();
+        MeshUse out;
+        const aiVector3D* uvs = in.HasTextureCoords(use.uv_set) ? in.mTextureCoords[use.uv_set] : nullptr;
+        bool good_normals = in.HasNormals();
+        mesh->vertices.resize(in.mNumVertices);
+        for (unsigned i = 0; i < in.mNumVertices; ++i) {
+            MeshVertex& v = mesh->vertices[i];
+            v.position = {in.mVertices[i].x, in.mVertices[i].y, in.mVertices[i].z};
+            if (!finite(v.position)) fail(which + ": vertex " + std::to_string(i) + " has a non-finite position");
+            if (good_normals) {
+                v.normal = {in.mNormals[i].x, in.mNormals[i].y, in.mNormals[i].z};
+                good_normals = finite(v.normal) && glm::dot(v.normal, v.normal) > 0.0f;
+            }
+            if (uvs) {
+                v.uv = {uvs[i].x, uvs[i].y};
+                if (use.transform) v.uv = apply_uv_transform(*use.transform, v.uv);
+                if (!std::isfinite(v.uv.x) || !std::isfinite(v.uv.y)) v.uv = glm::vec2(0.0f);
+            }
+            if (in.HasVertexColors(0)) {
+                const aiColor4D& c = in.mColors[0][i];
+                v.color = glm::clamp(glm::vec4(c.r, c.g, c.b, c.a), 0.0f, 1.0f);
+                if (!std::isfinite(c.r + c.g + c.b + c.a)) v.color = glm::vec4(1.0f);
+            }
+        }
+        if (in.GetNumColorChannels() > 1 || in.GetNumUVChannels() > 1) ignored_.insert("extra vertex color or texture coordinate sets");
+        std::vector<uint32_t> indices;
+        unsigned corners = 0;
+        for (unsigned f = 0; f < in.mNumFaces; ++f) {
+            const aiFace& face = in.mFaces[f];
+            if (corners == 0) corners = face.mNumIndices;
+            if (face.mNumIndices != corners) continue;  // (SortByPType leaves one kind per mesh)
+            for (unsigned k = 0; k < face.mNumIndices; ++k) {
+                if (face.mIndices[k] >= in.mNumVertices) fail(which + ": face " + std::to_string(f) + " has an index out of range");
+                indices.push_back(face.mIndices[k]);
+            }
+        }
+        if (indices.empty() || corners == 0 || corners > 3) return out;
+        if (corners == 3 && !good_normals) {
+            // No usable normals: each triangle gets its face normal (the scene format's rule).
+            const std::vector<MeshVertex> shared = std::move(mesh->vertices);
+            mesh->vertices.clear();
+            for (size_t t = 0; t + 2 < indices.size(); t += 3)
+                mesh->add_face_normal_triangle(shared[indices[t]], shared[indices[t + 1]], shared[indices[t + 2]]);
+        } else if (corners == 3) {
+            mesh->indices = std::move(indices);
+        } else if (corners == 2) {
+            mesh->lines = std::move(indices);
+            out.primitive = Topology::Lines;
+        } else {
+            mesh->points = std::move(indices);
+            out.primitive = Topology::Points;
+        }
+        out.mesh = std::move(mesh);
+        return out;
+    }
+
+    void place(const aiNode& node, const glm::mat4& parent, int depth) {
+        if (depth > kMaxNodeDepth) fail("node tree deeper than " + std::to_string(kMaxNodeDepth) + " levels (recursive nodes?)");
+        const glm::mat4 world = parent * to_glm(node.mTransformation);
+        if (!finite(world)) fail("node '" + std::string(node.mName.C_Str()) + "' has a non-finite transform");
+        world_[node.mName.C_Str()] = world;
+        for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+            if (node.mMeshes[i] >= meshes_.size()) fail("node '" + std::string(node.mName.C_Str()) + "' names a mesh out of range");
+            const aiMesh& in = *scene_.mMeshes[node.mMeshes[i]];
+            const MeshUse& mesh = meshes_[node.mMeshes[i]];
+            if (!mesh.mesh) continue;
+            if (model_.objects.size() >= kMaxObjects) fail("more than " + std::to_string(kMaxObjects) + " mesh instances");
+            SceneObject o;
+            o.mesh = mesh.mesh;
+            o.model = world;
+            const MaterialUse& use = materials_[in.mMaterialIndex];
+            o.material = use.material;
+            o.cull = use.cull;
+            o.primitive = mesh.primitive;
+            model_.objects.push_back(std::move(o));
+        }
+        for (unsigned i = 0; i < node.mNumChildren; ++i) place(*node.mChildren[i], world, depth + 1);
+    }
+
+    // An assimp camera looks from mPosition along mLookAt with mUp, in its node's space;
+    // mHorizontalFOV is half the horizontal angle, mOrthographicWidth half the width.
+    void read_camera(const aiCamera& c) {
+        const auto node = world_.find(c.mName.C_Str());
+        const glm::mat4 m = node != world_.end() ? node->second : glm::mat4(1.0f);
+        Camera cam;
+        cam.eye = glm::vec3(m * glm::vec4(c.mPosition.x, c.mPosition.y, c.mPosition.z, 1.0f));
+        cam.target = cam.eye + glm::vec3(m * glm::vec4(c.mLookAt.x, c.mLookAt.y, c.mLookAt.z, 0.0f));
+        cam.up = glm::vec3(m * glm::vec4(c.mUp.x, c.mUp.y, c.mUp.z, 0.0f));
+        const float aspect = c.mAspect > 0.0f ? c.mAspect : 4.0f / 3.0f;
+        cam.orthographic = c.mOrthographicWidth > 0.0f;
+        cam.fov_y = glm::degrees(2.0f * std::atan(std::tan(c.mHorizontalFOV) / aspect));
+        cam.height = 2.0f * c.mOrthographicWidth / aspect;
+        cam.near = c.mClipPlaneNear > 0.0f ? c.mClipPlaneNear : 0.1f;
+        cam.far = c.mClipPlaneFar > cam.near ? c.mClipPlaneFar : cam.near * 1000.0f;
+        const bool usable = finite(cam.eye) && finite(cam.target) && finite(cam.up) && cam.eye != cam.target &&
+                            std::isfinite(cam.fov_y) && cam.fov_y > 0.0f && cam.fov_y < 180.0f &&
+                            (!cam.orthographic || (std::isfinite(cam.height) && cam.height > 0.0f));
+        if (usable) model_.cameras.push_back(cam);
+        else ignored_.insert("a camera with unusable parameters");
+    }
+
+    void note_ignored() {
+        if (scene_.mNumAnimations > 0) ignored_.insert("animations (drawn at rest)");
+        if (scene_.mNumLights > 0) ignored_.insert("the file's lights (a default rig is used)");
+        for (const std::string& what : ignored_) model_.ignored.push_back(what);
+    }
+
+    const aiScene& scene_;
+    const fs::path path_;
+    const std::string name_;
+    const MissingTexture missing_;
+    Model model_;
+    std::vector<MaterialUse> materials_;
+    std::vector<MeshUse> meshes_;
+    std::map<std::string, std::shared_ptr<const Texture>> textures_;
+    std::map<std::string, glm::mat4> world_;  // node name -> world transform (for cameras)
+    std::set<std::string> ignored_;
+};
+
+}  // namespace
+
+Model load_model(const fs::path& path, MissingTexture missing) {
+    const std::string name = path.string();
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw InputError(name + ": file not found");
+    if (fs::is_directory(path, ec)) throw InputError(name + ": is a directory");
+    if (!is_model_file(path)) throw InputError(name + ": not a model file assimp reads (by its extension)");
+    Assimp::Importer importer;
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
+    // Polygons become triangles; each mesh is left with one primitive type; broken
+    // structures (indices out of range...) are rejected by assimp's validation.
+    const aiScene* scene = importer.ReadFile(
+        name, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    if (!scene) throw InputError(name + ": " + one_line(importer.GetErrorString()));
+    if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode)
+        throw InputError(name + ": nothing to draw (the file has no meshes)");
+    return Loader(*scene, path, missing).load();
+}
+
+bool is_model_file(const fs::path& path) {
+    const std::string ext = lower(path.extension().string());
+    if (ext.size() < 2 || ext == ".json") return false;
+    static const Assimp::Importer importer;  // (only asked which extensions it knows)
+    return importer.IsExtensionSupported(ext);
+}
+
+std::optional<BoundingSphere> bounding_sphere(const std::vector<SceneObject>& objects) {
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    auto each_vertex = [&](auto&& f) {
+        for (const SceneObject& o : objects)
+            for (const MeshVertex& v : o.mesh->vertices) f(glm::vec3(o.model * glm::vec4(v.position, 1.0f)));
+    };
+    each_vertex([&](const glm::vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    });
+    if (!(lo.x <= hi.x)) return std::nullopt;
+    BoundingSphere s;
+    s.center = 0.5f * (lo + hi);
+    float r2 = 0.0f;
+    each_vertex([&](const glm::vec3& p) { r2 = std::max(r2, glm::dot(p - s.center, p - s.center)); });
+    s.radius = std::sqrt(r2);
+    return s;
+}
+
+}  // namespace softraster

@@ -1,0 +1,84 @@
+// A model in a scene of its own: framed by its bounding sphere and lit by a default rig.
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "softraster/error.h"
+#include "softraster/scene/model.h"
+
+namespace softraster {
+namespace {
+
+constexpr float kFovY = 30.0f;  // degrees: a long lens, little perspective distortion
+
+struct ViewDirection {
+    glm::vec3 to_eye;  // from the model's center toward the camera
+    glm::vec3 up;
+};
+
+ViewDirection direction(ModelView view) {
+    switch (view) {
+        case ModelView::Front: return {{0, 0, 1}, {0, 1, 0}};
+        case ModelView::Back: return {{0, 0, -1}, {0, 1, 0}};
+        case ModelView::Left: return {{-1, 0, 0}, {0, 1, 0}};
+        case ModelView::Right: return {{1, 0, 0}, {0, 1, 0}};
+        case ModelView::Top: return {{0, 1, 0}, {0, 0, -1}};
+        case ModelView::Bottom: return {{0, -1, 0}, {0, 0, 1}};
+        case ModelView::Iso: return {glm::normalize(glm::vec3(1, 1, 1)), {0, 1, 0}};
+        case ModelView::ThreeQuarter: break;
+    }
+    // 35 degrees to the right of the front, 25 degrees above it.
+    const float az = glm::radians(35.0f), el = glm::radians(25.0f);
+    return {{std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el)}, {0, 1, 0}};
+}
+
+}  // namespace
+
+Scene model_scene(const Model& model, const ModelPicture& picture) {
+    Scene scene;
+    scene.width = picture.width;
+    scene.height = picture.height;
+    scene.background = picture.background;
+    scene.samples = picture.samples;
+    scene.objects = model.objects;
+    if (picture.shading)
+        for (SceneObject& o : scene.objects) o.material.shading = *picture.shading;
+
+    const BoundingSphere sphere = bounding_sphere(model.objects).value_or(BoundingSphere{});
+    const float radius = sphere.radius > 0.0f ? sphere.radius : 1.0f;
+    const ViewDirection dir = direction(picture.view);
+    Camera& cam = scene.camera;
+    if (picture.camera >= 0) {
+        if (size_t(picture.camera) >= model.cameras.size())
+            throw InputError("--camera " + std::to_string(picture.camera) + ": the model has " +
+                             std::to_string(model.cameras.size()) + " camera(s)");
+        cam = model.cameras[size_t(picture.camera)];
+    } else {
+        // The sphere fills the narrower of the two fields of view: seen from distance d it
+        // spans a half-angle asin(r / d), so d = r / sin(half field of view).
+        const float aspect = float(picture.width) / float(picture.height);
+        const float half_y = glm::radians(kFovY) / 2.0f;
+        const float half = std::min(half_y, std::atan(std::tan(half_y) * aspect));
+        const float distance = radius / std::sin(half);
+        cam.fov_y = kFovY;
+        cam.target = sphere.center;
+        cam.eye = sphere.center + distance * dir.to_eye;
+        cam.up = dir.up;
+        cam.near = std::max(distance - 1.01f * radius, 1e-3f * distance);
+        cam.far = distance + 1.01f * radius;
+    }
+
+    // The rig, in the camera's frame: right r, up u, forward f.
+    const glm::vec3 f = glm::normalize(cam.target - cam.eye);
+    const glm::vec3 r = glm::normalize(glm::cross(f, cam.up));
+    const glm::vec3 u = glm::cross(r, f);
+    scene.lights.ambient = glm::vec3(0.25f);
+    scene.lights.directional = {
+        {glm::normalize(f + 0.6f * r - 0.8f * u), glm::vec3(0.75f)},  // key: from the upper left
+        {glm::normalize(0.5f * f - r), glm::vec3(0.3f)},              // fill: from the right
+    };
+    return scene;
+}
+
+}  // namespace softraster
