@@ -14,6 +14,7 @@ using Run = std::function<int()>;
 Run add_render_command(CLI::App& app);
 Run add_showcase_command(CLI::App& app);
 Run add_bench_command(CLI::App& app);
+Run add_thumbnails_command(CLI::App& app);
 
 // --threads: a count, or 0 for one thread per core.
 inline unsigned thread_count(int requested) {

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     const cli::Run render = cli::add_render_command(app);
     const cli::Run showcase = cli::add_showcase_command(app);
     const cli::Run bench = cli::add_bench_command(app);
+    const cli::Run thumbnails = cli::add_thumbnails_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("showcase")) return showcase();
         if (app.got_subcommand("bench")) return bench();
+        if (app.got_subcommand("thumbnails")) return thumbnails();
     } catch (const InputError& e) {
         std::cerr << "softraster: error: " << e.what() << "\n";
         return cli::kExitBadInput;

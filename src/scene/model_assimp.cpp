@@ -73,6 +73,52 @@ glm::vec2 apply_uv_transform(const aiUVTransform& t, glm::vec2 uv) {
     return {moved.x, 1.0f - moved.y};
 }
 
+// assimp's message; importers turn std::bad_alloc into its what() text.
+std::string importer_error(const Assimp::Importer& importer) {
+    const std::string e = one_line(importer.GetErrorString());
+    return e.find("bad_alloc") != std::string::npos ? "out of memory while importing" : e;
+}
+
+// The pointers and counts of an imported scene agree: every array a count promises exists and
+// every index points inside its array (what the conversion below and assimp's later steps
+// rely on). Broken files get here: importers pass some inconsistencies through.
+void check_structure(const aiScene& scene, const std::string& name) {
+    auto fail = [&](const std::string& what) { throw InputError(name + ": " + what); };
+    if (!scene.mMeshes) fail("mesh list missing");
+    if (scene.mNumMaterials > 0 && !scene.mMaterials) fail("material list missing");
+    for (unsigned i = 0; i < scene.mNumMaterials; ++i)
+        if (!scene.mMaterials[i]) fail("material " + std::to_string(i) + " missing");
+    for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
+        const aiMesh* m = scene.mMeshes[i];
+        const std::string which = "mesh " + std::to_string(i);
+        if (!m) fail(which + " missing");
+        if (m->mNumVertices > 0 && !m->mVertices) fail(which + ": positions missing");
+        if (m->mNumFaces > 0 && !m->mFaces) fail(which + ": faces missing");
+        if (m->mMaterialIndex >= scene.mNumMaterials) fail(which + ": material index out of range");
+        for (unsigned f = 0; f < m->mNumFaces; ++f) {
+            const aiFace& face = m->mFaces[f];
+            if (face.mNumIndices == 0 || !face.mIndices) fail(which + ": face " + std::to_string(f) + " has no indices");
+            for (unsigned k = 0; k < face.mNumIndices; ++k)
+                if (face.mIndices[k] >= m->mNumVertices) fail(which + ": face " + std::to_string(f) + " has an index out of range");
+        }
+    }
+    // The node tree, without recursion (a hostile file can be deep) and with a bound on its size.
+    std::vector<std::pair<const aiNode*, int>> stack{{scene.mRootNode, 0}};
+    size_t visited = 0;
+    while (!stack.empty()) {
+        const auto [node, depth] = stack.back();
+        stack.pop_back();
+        if (!node) fail("a node of the scene tree is missing");
+        if (depth > kMaxNodeDepth) fail("node tree deeper than " + std::to_string(kMaxNodeDepth) + " levels (recursive nodes?)");
+        if (++visited > kMaxObjects) fail("more than " + std::to_string(kMaxObjects) + " nodes");
+        if (node->mNumMeshes > 0 && !node->mMeshes) fail("node '" + std::string(node->mName.C_Str()) + "': mesh list missing");
+        for (unsigned i = 0; i < node->mNumMeshes; ++i)
+            if (node->mMeshes[i] >= scene.mNumMeshes) fail("node '" + std::string(node->mName.C_Str()) + "' names a mesh out of range");
+        if (node->mNumChildren > 0 && !node->mChildren) fail("node '" + std::string(node->mName.C_Str()) + "': child list missing");
+        for (unsigned i = 0; i < node->mNumChildren; ++i) stack.push_back({node->mChildren[i], depth + 1});
+    }
+}
+
 // What a material needs from the mesh it is drawn on.
 struct MaterialUse {
     Material material;
@@ -123,8 +169,14 @@ private:
                 m.Get(AI_MATKEY_GLTF_ALPHACUTOFF, cutoff);
                 mat.alpha_cutoff = std::isfinite(cutoff) ? cutoff : 0.5f;
             }
+        } else if (mat.color.a <= 0.0f) {
+            // Formats without alpha modes: opacity 0 would hide the object entirely. It is
+            // nearly always an exporter's inverted convention (COLLADA's "transparency" 0
+            // written to mean opaque), so such a material is drawn opaque, and said so.
+            mat.color.a = 1.0f;
+            ignored_.insert("opacity 0 (taken for an inverted convention: drawn opaque)");
         } else if (mat.color.a < 1.0f) {
-            mat.blend = BlendMode::Alpha;  // formats without alpha modes: translucent when opacity < 1
+            mat.blend = BlendMode::Alpha;  // translucent when 0 < opacity < 1
         }
         // Single-sided only where the file says so (glTF's doubleSided false); other formats
         // rarely state it and their windings are often inconsistent, so nothing is culled.
@@ -166,18 +218,32 @@ private:
             if (const aiTexture* embedded = scene_.GetEmbeddedTexture(ref.c_str())) {
                 slot->second = std::make_shared<Texture>(embedded_image(*embedded, ref));
             } else {
-                std::string rel = ref;
-                std::replace(rel.begin(), rel.end(), '\\', '/');
-                fs::path file = path_.parent_path() / rel;
-                if (!fs::exists(file) && fs::exists(path_.parent_path() / fs::path(rel).filename()))
-                    file = path_.parent_path() / fs::path(rel).filename();
-                slot->second = std::make_shared<Texture>(read_image(file));
+                slot->second = std::make_shared<Texture>(read_image(texture_file(ref)));
             }
         } catch (const InputError& e) {
             if (missing_ == MissingTexture::Fail) fail("texture '" + ref + "': " + e.what());
             model_.warnings.push_back(name_ + ": texture '" + ref + "' not drawn (" + e.what() + ")");
         }
         return slot->second;
+    }
+
+    // Where a texture named `ref` is: beside the model as written (with Windows separators
+    // turned around); else its file name alone beside the model (paths from the author's
+    // machine); else the same name in another case (DOS-era formats write IMAGE1.JPG for
+    // image1.jpg). When none exists, the first, for the error message.
+    fs::path texture_file(std::string ref) const {
+        std::replace(ref.begin(), ref.end(), '\\', '/');
+        const fs::path dir = path_.parent_path();
+        const fs::path as_written = dir / ref;
+        const fs::path name = fs::path(ref).filename();
+        std::error_code ec;
+        if (fs::exists(as_written, ec)) return as_written;
+        if (name.empty()) return as_written;
+        if (fs::exists(dir / name, ec)) return dir / name;
+        const std::string wanted = lower(name.string());
+        for (auto it = fs::directory_iterator(dir.empty() ? fs::path(".") : dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+            if (lower(it->path().filename().string()) == wanted) return it->path();
+        return as_written;
     }
 
     Image embedded_image(const aiTexture& t, const std::string& ref) const {
@@ -245,6 +311,10 @@ private:
                 if (face.mIndices[k] >= in.mNumVertices) fail(which + ": face " + std::to_string(f) + " has an index out of range");
                 indices.push_back(face.mIndices[k]);
             }
+        }
+        if (in.mNumFaces == 0 && in.mNumVertices > 0) {  // a point cloud: every vertex a point
+            corners = 1;
+            for (unsigned i = 0; i < in.mNumVertices; ++i) indices.push_back(i);
         }
         if (indices.empty() || corners == 0 || corners > 3) return out;
         if (corners == 3 && !good_normals) {
@@ -339,13 +409,16 @@ Model load_model(const fs::path& path, MissingTexture missing) {
     if (!is_model_file(path)) throw InputError(name + ": not a model file assimp reads (by its extension)");
     Assimp::Importer importer;
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
-    // Polygons become triangles; each mesh is left with one primitive type; broken
-    // structures (indices out of range...) are rejected by assimp's validation.
-    const aiScene* scene = importer.ReadFile(
-        name, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
-    if (!scene) throw InputError(name + ": " + one_line(importer.GetErrorString()));
-    if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode)
+    const aiScene* scene = importer.ReadFile(name, 0);
+    if (!scene) throw InputError(name + ": " + importer_error(importer));
+    if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode || scene->mNumMeshes == 0)
         throw InputError(name + ": nothing to draw (the file has no meshes)");
+    // Our own structural checks rather than assimp's validation step, which also rejects
+    // what we can draw (point clouds: meshes without faces) or ignore (lights without nodes).
+    check_structure(*scene, name);
+    // Then polygons become triangles and each mesh is left with one primitive type.
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
+    if (!scene) throw InputError(name + ": " + importer_error(importer));
     return Loader(*scene, path, missing).load();
 }
 
@@ -357,11 +430,13 @@ bool is_model_file(const fs::path& path) {
 }
 
 std::optional<BoundingSphere> bounding_sphere(const std::vector<SceneObject>& objects) {
-    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    // Only the vertices drawn count: a file's unused vertices can lie anywhere.
     auto each_vertex = [&](auto&& f) {
         for (const SceneObject& o : objects)
-            for (const MeshVertex& v : o.mesh->vertices) f(glm::vec3(o.model * glm::vec4(v.position, 1.0f)));
+            for (uint32_t i : primitive_indices(*o.mesh, o.primitive))
+                f(glm::vec3(o.model * glm::vec4(o.mesh->vertices[i].position, 1.0f)));
     };
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
     each_vertex([&](const glm::vec3& p) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
