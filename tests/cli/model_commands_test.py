@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""model_commands_test.py SOFTRASTER CORPUS WORKDIR: `render MODEL` and `thumbnails`.
+
+CORPUS is Debian's assimp-testmodels folder (/usr/share/assimp/models)."""
+import json, os, shutil, signal, struct, subprocess, sys, time
+
+exe, corpus, work = sys.argv[1:4]
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+failures = []
+DUCK = os.path.join(corpus, 'Collada', 'duck.dae')
+BOX = os.path.join(corpus, 'glTF2', 'BoxTextured-glTF', 'BoxTextured.gltf')
+CAMERAS = os.path.join(corpus, 'glTF2', 'cameras', 'Cameras.gltf')
+
+
+def run(args, timeout=120):
+    return subprocess.run([exe] + args, capture_output=True, text=True, timeout=timeout)
+
+
+def png_size(path):
+    with open(path, 'rb') as f:
+        data = f.read(24)
+    return struct.unpack('>II', data[16:24]) if data[:8] == b'\x89PNG\r\n\x1a\n' else None
+
+
+def check(name, ok, detail=''):
+    if not ok:
+        failures.append('%s %s' % (name, detail))
+
+
+# render MODEL: size, views, flags that only models take.
+out = os.path.join(work, 'duck.png')
+r = run(['render', DUCK, '-o', out, '--size', '300x200', '--view', 'front', '--samples', '1'])
+check('render duck', r.returncode == 0 and png_size(out) == (300, 200), r.stderr)
+out = os.path.join(work, 'box.png')
+r = run(['render', BOX, '-o', out])
+check('render box default size', r.returncode == 0 and png_size(out) == (512, 512), r.stderr)
+if os.path.exists(CAMERAS):
+    r = run(['render', CAMERAS, '-o', os.path.join(work, 'cam.png'), '--camera', '0'])
+    check('render --camera 0', r.returncode == 0, r.stderr)
+for args, what in [(['--size', '0'], '--size'), (['--size', '20x'], '--size'), (['--background', '1,2,3'], '--background'),
+                   (['--background', '#12345'], '--background'), (['--camera', '99'], 'camera')]:
+    target = os.path.join(work, 'bad.png')
+    r = run(['render', DUCK, '-o', target] + args)
+    check('render %s' % args, r.returncode == 2 and what in r.stderr and len(r.stderr.strip().splitlines()) == 1
+          and not os.path.exists(target), '%d %r' % (r.returncode, r.stderr))
+scene = os.path.join(work, 'scene.json')
+json.dump({'version': 1, 'image': {'width': 8, 'height': 8}, 'camera': {'eye': [0, 0, 3], 'target': [0, 0, 0]},
+           'objects': []}, open(scene, 'w'))
+r = run(['render', scene, '-o', os.path.join(work, 's.png'), '--size', '64'])
+check('model options on a scene', r.returncode == 2 and 'model files' in r.stderr, r.stderr)
+r = run(['render', os.path.join(work, 'nothing.glb'), '-o', os.path.join(work, 'n.png')])
+check('render missing model', r.returncode == 2 and 'nothing.glb' in r.stderr, r.stderr)
+
+# thumbnails: a folder with a good model, a broken one and a subfolder; names mirror the tree.
+models = os.path.join(work, 'models')
+os.makedirs(os.path.join(models, 'sub'))
+shutil.copy(DUCK, os.path.join(models, 'duck.dae'))
+shutil.copy(os.path.join(corpus, 'STL', 'Spider_ascii.stl'), os.path.join(models, 'sub', 'spider.stl'))
+open(os.path.join(models, 'broken.obj'), 'w').write('v 0 0 0\nf 1 2 3\n')
+open(os.path.join(models, 'notes.txt'), 'w').write('not a model\n')
+thumbs = os.path.join(work, 'thumbs')
+r = run(['thumbnails', models, '--out', thumbs, '--size', '32'])
+report = json.load(open(os.path.join(thumbs, 'thumbnails.json')))
+status = {os.path.relpath(e['input'], models): e['status'] for e in report['inputs']}
+check('thumbnails exit 1 with a failure', r.returncode == 1, '%d %s' % (r.returncode, r.stderr))
+check('thumbnails statuses', status == {'broken.obj': 'failed', 'duck.dae': 'ok', 'sub/spider.stl': 'ok'}, status)
+check('thumbnails mirrors the tree', png_size(os.path.join(thumbs, 'sub', 'spider.stl.png')) == (32, 32))
+check('thumbnails failure line', any(l.startswith('failed') and 'broken.obj' in l for l in r.stderr.splitlines()), r.stderr)
+check('thumbnails summary', report['summary']['ok'] == 2 and report['summary']['failed'] == 1, report['summary'])
+
+# --skip-existing: a re-run draws only what has no picture yet.
+os.remove(os.path.join(thumbs, 'duck.dae.png'))
+r = run(['thumbnails', models, '--out', thumbs, '--size', '32', '--skip-existing'])
+report = json.load(open(os.path.join(thumbs, 'thumbnails.json')))
+status = {os.path.relpath(e['input'], models): e['status'] for e in report['inputs']}
+check('skip-existing', status == {'broken.obj': 'failed', 'duck.dae': 'ok', 'sub/spider.stl': 'skipped'}, status)
+
+# All good: exit 0. Bad usage: exit 2.
+r = run(['thumbnails', DUCK, '--out', os.path.join(work, 'one')])
+check('thumbnails all good exits 0', r.returncode == 0 and png_size(os.path.join(work, 'one', 'duck.dae.png')) == (256, 256),
+      r.stderr)
+r = run(['thumbnails', os.path.join(work, 'empty_dir_missing'), '--out', os.path.join(work, 'none')])
+check('thumbnails missing input is a failed entry', r.returncode == 1, '%d %s' % (r.returncode, r.stderr))
+r = run(['thumbnails', DUCK, '--out', os.path.join(work, 'x'), '--jobs', '-1'])
+check('thumbnails bad flag exits 2', r.returncode == 2, '%d %s' % (r.returncode, r.stderr))
+
+# A model that hangs (a FIFO nobody writes) is given up after --timeout; one whose process
+# dies (killed here with SIGSEGV, as a crashing importer would) is reported as crashed. The
+# other files are drawn either way.
+hang = os.path.join(work, 'hang')
+os.makedirs(hang)
+os.mkfifo(os.path.join(hang, 'stuck.obj'))
+shutil.copy(DUCK, os.path.join(hang, 'duck.dae'))
+# (Named one by one: a folder walk takes regular files only.)
+r = run(['thumbnails', os.path.join(hang, 'stuck.obj'), os.path.join(hang, 'duck.dae'), '--out', os.path.join(work, 'hang_out'),
+         '--timeout', '1', '--jobs', '2'], timeout=60)
+report = json.load(open(os.path.join(work, 'hang_out', 'thumbnails.json')))
+reasons = {os.path.basename(e['input']): (e['status'], e.get('reason', '')) for e in report['inputs']}
+check('timeout', r.returncode == 1 and reasons.get('stuck.obj', ('', ''))[1].startswith('timed out')
+      and reasons.get('duck.dae', ('',))[0] == 'ok', reasons)
+stuck_only = os.path.join(work, 'stuck_only')
+os.makedirs(stuck_only)
+os.mkfifo(os.path.join(stuck_only, 'stuck.obj'))
+# (One at a time, the stuck file first: the only child seen while it runs is its own.)
+p = subprocess.Popen([exe, 'thumbnails', os.path.join(stuck_only, 'stuck.obj'), DUCK, '--out', os.path.join(work, 'crash_out'), '--jobs', '1',
+                      '--timeout', '60'],
+                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+children = []
+for _ in range(200):
+    time.sleep(0.05)
+    try:
+        children = open('/proc/%d/task/%d/children' % (p.pid, p.pid)).read().split()
+    except OSError:
+        children = []
+    if children:
+        break
+for c in children:
+    os.kill(int(c), signal.SIGSEGV)
+p.communicate(timeout=60)
+report = json.load(open(os.path.join(work, 'crash_out', 'thumbnails.json')))
+reasons = {os.path.basename(e['input']): (e['status'], e.get('reason', '')) for e in report['inputs']}
+check('crash', p.returncode == 1 and 'crashed (signal 11' in reasons.get('stuck.obj', ('', ''))[1]
+      and reasons.get('duck.dae', ('',))[0] == 'ok', reasons)
+
+if failures:
+    print('FAILED:\n  ' + '\n  '.join(failures))
+    sys.exit(1)
+print('ok')
