@@ -14,6 +14,7 @@
 #include "softraster/framebuffer.h"
 #include "softraster/io/image_io.h"
 #include "softraster/scene/builtin_meshes.h"
+#include "softraster/scene/model.h"
 #include "softraster/scene/scene.h"
 
 namespace softraster {
@@ -191,6 +192,7 @@ struct Loader {
     int version = 1;
     int samples = 1;
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;  // one load per distinct file
+    std::map<std::string, std::shared_ptr<const Model>> models;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
 
     void read_image(const Node& n, Scene& s) {
@@ -358,11 +360,43 @@ struct Loader {
         st.stencil_back = st.stencil_front;
     }
 
-    SceneObject read_object(const Node& n) {
+    // A model file (version 2): every object it places, each under the object's transform,
+    // with the file's own materials; the object may set the shading, culling, winding and
+    // per-fragment state of all of them.
+    void read_model_object(const Node& n, const SceneObject& o, std::vector<SceneObject>& out) {
+        for (const char* key : {"primitive", "line_width", "point_size", "wireframe"})
+            if (n.has(key)) n[key].fail("not with 'model' (the file says what it draws)");
+        std::optional<Shading> shading;
+        if (n.has("material")) {
+            const Node m = n["material"];
+            m.expect_object({"shading"});
+            Material with;
+            read_material(m, with);
+            shading = with.shading;
+        }
+        const std::string rel = n["model"].string();
+        if (rel.empty()) n["model"].fail("empty model path");
+        const std::string path = (dir / rel).string();
+        auto& slot = models[path];
+        if (!slot) slot = std::make_shared<Model>(load_model(path, MissingTexture::Fail));
+        for (const SceneObject& part : slot->objects) {
+            SceneObject placed = part;
+            placed.model = o.model * part.model;
+            if (shading && (part.primitive == Topology::Triangles)) placed.material.shading = *shading;
+            if (n.has("cull")) placed.cull = o.cull;
+            if (n.has("front_face")) placed.front_face = o.front_face;
+            placed.state = o.state;
+            out.push_back(std::move(placed));
+        }
+    }
+
+    void read_object(const Node& n, std::vector<SceneObject>& out) {
         n.expect_object({"mesh", "builtin", "transform", "material", "cull", "front_face"},
-                        {"depth", "stencil", "scissor", "primitive", "line_width", "point_size", "wireframe"}, version);
+                        {"depth", "stencil", "scissor", "primitive", "line_width", "point_size", "wireframe", "model"}, version);
         SceneObject o;
-        if (n.has("mesh") == n.has("builtin")) n.fail("exactly one of 'mesh' and 'builtin' is required");
+        if (int(n.has("mesh")) + int(n.has("builtin")) + int(n.has("model")) != 1)
+            n.fail(version >= 2 ? "exactly one of 'mesh', 'builtin' and 'model' is required"
+                                : "exactly one of 'mesh' and 'builtin' is required");
         glm::vec3 translate(0.0f), rotate(0.0f), scale(1.0f);
         if (n.has("transform")) {
             const Node t = n["transform"];
@@ -379,7 +413,7 @@ struct Loader {
         if (n.has("cull"))
             o.cull = n["cull"].choice<CullMode>({{"back", CullMode::Back}, {"front", CullMode::Front}, {"none", CullMode::None}});
         if (n.has("front_face")) o.front_face = n["front_face"].choice<FrontFace>({{"ccw", FrontFace::CCW}, {"cw", FrontFace::CW}});
-        if (n.has("material")) read_material(n["material"], o.material);
+        if (n.has("material") && !n.has("model")) read_material(n["material"], o.material);
         if (n.has("depth")) read_depth(n["depth"], o.state);
         if (n.has("stencil")) read_stencil(n["stencil"], o.state);
         if (n.has("scissor")) {
@@ -401,12 +435,9 @@ struct Loader {
             if (w.has("width")) wire.width = float(w["width"].number_in(1, 255, false, false, "1..255"));
             o.wireframe = wire;
         }
-        if (n.has("builtin")) {
-            o.mesh = read_builtin(n["builtin"]);
-        } else {
-            o.mesh = read_mesh_file(n["mesh"]);
-        }
-        return o;
+        if (n.has("model")) return read_model_object(n, o, out);
+        o.mesh = n.has("builtin") ? read_builtin(n["builtin"]) : read_mesh_file(n["mesh"]);
+        out.push_back(std::move(o));
     }
 };
 
@@ -438,7 +469,7 @@ Scene load_scene(const std::filesystem::path& path) {
     loader.read_camera(top["camera"], scene.camera);
     if (top.has("lights")) loader.read_lights(top["lights"], scene.lights);
     const Node objects = top["objects"];
-    for (size_t i = 0; i < objects.array_size(); ++i) scene.objects.push_back(loader.read_object(objects.at(i)));
+    for (size_t i = 0; i < objects.array_size(); ++i) loader.read_object(objects.at(i), scene.objects);
     return scene;
 }
 

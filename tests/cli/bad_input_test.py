@@ -117,6 +117,26 @@ expect_bad('samples 6', v2('v2s6.json', samples=6), ['image.samples', 'must be 1
 expect_bad('supersample 5', v2('v2ss5.json', supersample=5), ['image.supersample', 'out of range'])
 expect_bad('supersample too big', v2('v2ssbig.json', width=9000, supersample=2), ['image.supersample', 'exceed'])
 expect_bad('clear_stencil 256', v2('v2cs.json', clear_stencil=256), ['image.clear_stencil', 'out of range'])
+# "model" objects (version 2)
+def model_obj(name, obj, version=2):
+    s = json.loads(json.dumps(BASE))
+    s['version'] = version
+    s['objects'] = [obj]
+    return write(name, json.dumps(s))
+
+
+write('cube.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n')
+expect_bad('model in v1', model_obj('v1model.json', {"model": "cube.obj"}, 1), ['objects[0].model', 'version 2'])
+expect_bad('model and builtin', model_obj('v2mb.json', {"model": "cube.obj", "builtin": {"type": "cube"}}), ['objects[0]', "'model'"])
+expect_bad('model with wireframe', model_obj('v2mw.json', {"model": "cube.obj", "wireframe": {}}), ['objects[0].wireframe', 'not with'])
+expect_bad('model with a material color', model_obj('v2mc.json', {"model": "cube.obj", "material": {"color": [1, 0, 0]}}),
+           ['objects[0].material.color', 'unknown key'])
+expect_bad('model missing', model_obj('v2mm.json', {"model": "gone.glb"}), ['gone.glb', 'not found'])
+expect_bad('model not a model', model_obj('v2mt.json', {"model": "v2mm.json"}), ['v2mm.json', 'not a model file'])
+write('badtex.obj', 'mtllib badtex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n')
+write('badtex.mtl', 'newmtl t\nmap_Kd nowhere.png\n')
+expect_bad('model texture missing (scene files are strict)', model_obj('v2mtex.json', {"model": "badtex.obj"}),
+           ['badtex.obj', 'nowhere.png', 'not found'])
 expect_bad('unknown draw_order', write('v2order.json', json.dumps(dict(BASE, version=2, draw_order="random"))), ['draw_order', "unknown value 'random'"])
 expect_bad('unknown stencil op', v2('v2op.json', {"stencil": {"pass": "increment"}}), ['objects[0].stencil.pass', "unknown value 'increment'"])
 expect_bad('unknown stencil func', v2('v2sf.json', {"stencil": {"front": {"func": "lequal"}}}), ['objects[0].stencil.front.func', 'unknown value'])
