@@ -260,6 +260,9 @@ Run add_thumbnails_command(CLI::App& app) {
             }
             if (status == "ok" && item.result.contains("warnings"))
                 for (const auto& w : item.result["warnings"]) std::fprintf(stderr, "warning %s\n", w.get<std::string>().c_str());
+            if (status == "ok" && opt->model.verbose && item.result.contains("ignored"))
+                for (const auto& what : item.result["ignored"])
+                    std::fprintf(stderr, "%s: not drawn: %s\n", item.input.c_str(), what.get<std::string>().c_str());
             if (!opt->quiet) progress.update(done, failed ? std::to_string(failed) + " failed" : "", true);
         };
 

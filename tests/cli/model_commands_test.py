@@ -35,6 +35,10 @@ check('render duck', r.returncode == 0 and png_size(out) == (300, 200), r.stderr
 out = os.path.join(work, 'box.png')
 r = run(['render', BOX, '-o', out])
 check('render box default size', r.returncode == 0 and png_size(out) == (512, 512), r.stderr)
+r = run(['render', DUCK, '-o', os.path.join(work, 'v.png'), '--size', '16', '-v'])
+check('render -v says what is not drawn', r.returncode == 0 and "not drawn: the file's lights" in r.stderr, r.stderr)
+r = run(['thumbnails', DUCK, '--out', os.path.join(work, 'verbose'), '--size', '16', '-v'])
+check('thumbnails -v says what is not drawn', r.returncode == 0 and "not drawn: the file's lights" in r.stderr, r.stderr)
 if os.path.exists(CAMERAS):
     r = run(['render', CAMERAS, '-o', os.path.join(work, 'cam.png'), '--camera', '0'])
     check('render --camera 0', r.returncode == 0, r.stderr)
