@@ -20,7 +20,7 @@ command -v clang++ >/dev/null || { echo "scripts/fuzz.sh needs clang (apt-get in
 scripts/install-deps.sh --tests
 CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" -DSOFTRASTER_SANITIZE=ON -DSOFTRASTER_FUZZ=ON >/dev/null
-cmake --build build-fuzz --target "fuzz_$target" softraster_oiio
+cmake --build build-fuzz --target "fuzz_$target" softraster_oiio >/dev/null
 work=build-fuzz/corpus/$target
 found=build-fuzz/found/$target
 mkdir -p "$work" "$found" "tests/fuzz/corpus/$target"
@@ -30,6 +30,7 @@ case $target in
            find /usr/share/assimp/models -iname "*.$ext" -size -200k -exec cp -n {} "$work"/ \; 2>/dev/null || true ;;
 esac
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/fuzz/lsan.supp
 status=0
 "build-fuzz/tests/fuzz_$target" "$work" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 \
   -artifact_prefix="$found/" -print_final_stats=1 || status=$?

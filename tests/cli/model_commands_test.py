@@ -80,6 +80,24 @@ report = json.load(open(os.path.join(thumbs, 'thumbnails.json')))
 status = {os.path.relpath(e['input'], models): e['status'] for e in report['inputs']}
 check('skip-existing', status == {'broken.obj': 'failed', 'duck.dae': 'ok', 'sub/spider.stl': 'skipped'}, status)
 
+# Globs: the matches, named relative to the pattern's folders without wildcards.
+r = run(['thumbnails', os.path.join(models, '*', '*.stl'), os.path.join(models, '*.dae'), '--out', os.path.join(work, 'glob'),
+         '--size', '16'])
+check('thumbnails globs', r.returncode == 0 and png_size(os.path.join(work, 'glob', 'sub', 'spider.stl.png')) == (16, 16)
+      and png_size(os.path.join(work, 'glob', 'duck.dae.png')) == (16, 16), r.stderr)
+
+# A texture that cannot be read: the model is drawn without it, with a warning line.
+notex = os.path.join(work, 'notex')
+os.makedirs(notex)
+scenes_models = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scenes', 'models')
+for f in ('materials.obj', 'materials.mtl'):
+    shutil.copy(os.path.join(scenes_models, f), notex)
+r = run(['render', os.path.join(notex, 'materials.obj'), '-o', os.path.join(work, 'notex.png'), '--size', '32'])
+check('render with a missing texture warns', r.returncode == 0 and 'warning' in r.stderr and 'obj_texture.png' in r.stderr
+      and png_size(os.path.join(work, 'notex.png')) == (32, 32), r.stderr)
+r = run(['thumbnails', notex, '--out', os.path.join(work, 'notex_out'), '--size', '16'])
+check('thumbnails with a missing texture warns', r.returncode == 0 and 'obj_texture.png' in r.stderr, r.stderr)
+
 # All good: exit 0. Bad usage: exit 2.
 r = run(['thumbnails', DUCK, '--out', os.path.join(work, 'one')])
 check('thumbnails all good exits 0', r.returncode == 0 and png_size(os.path.join(work, 'one', 'duck.dae.png')) == (256, 256),

@@ -63,7 +63,7 @@ public:
         i8 lanes;
         std::memcpy(&lanes, detail::kCompressLanes[m].data(), sizeof lanes);
         auto put = [&](auto* dst, auto v) {  // a whole vector: the queue has room for eight past count_
-            const auto packed = m == 0xffu ? v : __builtin_shuffle(v, lanes);
+            const auto packed = m == 0xffu ? v : permute(v, lanes);
             std::memcpy(dst + count_, &packed, sizeof packed);
         };
         put(z_.data(), z);

@@ -75,6 +75,17 @@ inline f8 splat(float x) { return f8{} + x; }
 inline i8 splat_i(int32_t x) { return i8{} + x; }
 inline const i8 kLaneIndex = {0, 1, 2, 3, 4, 5, 6, 7};
 
+// r[k] = v[lanes[k]]: GCC's __builtin_shuffle; clang has no run-time lane shuffle builtin.
+template <class V>
+inline V permute(V v, i8 lanes) {
+#if defined(__clang__)
+    V r;
+    for (int k = 0; k < kLanes; ++k) r[k] = v[lanes[k]];
+    return r;
+#else
+    return __builtin_shuffle(v, lanes);
+#endif
+}
 inline f8 to_float(i8 v) { return __builtin_convertvector(v, f8); }
 inline i8 to_int(f8 v) { return __builtin_convertvector(v, i8); }  // truncates
 inline f8 select(i8 mask, f8 a, f8 b) { return mask ? a : b; }
