@@ -61,3 +61,27 @@ TEST(Interpolation, DepthIsAffineInWindowSpace) {
             EXPECT_NEAR(fb.depth_data()[fb.sample_index(x, y)], expected, 1e-6f);
         }
 }
+
+// A varying with the same value at every corner is that value at every pixel, exactly, in
+// perspective too: setup keeps the value instead of dividing a/w by 1/w (triangle_setup.h).
+TEST(Interpolation, ConstantVaryingsAreExact) {
+    constexpr int W = 97, H = 61;
+    const glm::mat4 proj = glm::perspective(glm::radians(70.0f), float(W) / H, 0.3f, 40.0f);
+    const float value = 0.7123f;  // (0.7123 * 1/w) / (1/w) rounds away from it at some pixels
+    const glm::vec3 p[4] = {{-3, -1, -1}, {3, -1, -1}, {3, 4, -30}, {-3, 4, -30}};
+    std::vector<ClipVertexIn> v;
+    for (const glm::vec3& q : p) v.push_back({proj * glm::vec4(q, 1.0f), value});
+    std::vector<float> values(size_t(W) * H, NAN);
+    Framebuffer fb(W, H);
+    Context ctx(fb);
+    ctx.clear(glm::vec4(0));
+    ctx.state.cull = CullMode::None;
+    draw(ctx, CaptureShader{&values, W}, v, {0, 1, 2, 0, 2, 3});
+    int covered = 0;
+    for (float got : values) {
+        if (std::isnan(got)) continue;
+        ASSERT_EQ(got, value);
+        ++covered;
+    }
+    EXPECT_GT(covered, 1000);
+}

@@ -19,10 +19,15 @@ inline T interpolate_depth(const TriangleSetup<N>& t, T i, T j) {
 
 // Flat: the shader's flat varyings (shader.h), whose planes hold the provoking vertex's
 // value (setup_planes) and are not interpolated.
+// A triangle with constant varyings (setup_planes) has constant planes: each gives its value.
 template <uint64_t Flat, int N, class T>
 inline std::array<T, N> interpolate_perspective(const TriangleSetup<N>& t, T i, T j) {
-    const T w = 1.0f / t.inv_w.at(i, j);
     std::array<T, N> out;
+    if (t.constant_varyings) {
+        for (size_t k = 0; k < size_t(N); ++k) out[k] = t.var_w[k].at(i, j);  // a0 + 0 i + 0 j: exactly a0
+        return out;
+    }
+    const T w = 1.0f / t.inv_w.at(i, j);
     for (size_t k = 0; k < size_t(N); ++k) {
         if ((Flat >> k) & 1) out[k] = t.var_w[k].at(i, j);  // a0 + 0 i + 0 j: exactly a0
         else out[k] = t.var_w[k].at(i, j) * w;

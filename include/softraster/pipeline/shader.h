@@ -67,6 +67,12 @@ inline constexpr uint64_t kFlatVaryings = [] {
     else return uint64_t(0);
 }();
 
+// A shader whose color depends on its varyings alone (not on the fragment's position, depth
+// or facing) says so with `static constexpr bool kVaryingsOnly = true;`: a triangle whose
+// varyings are constant (triangle_setup.h) is then shaded once, not once per pixel.
+template <class S>
+concept VaryingsOnlyShader = requires { requires S::kVaryingsOnly; };
+
 template <class S>
 concept Shader = VaryingStruct<typename S::Varyings> &&
     requires(const S s, const typename S::Vertex& in, typename S::Varyings& out,

@@ -170,6 +170,21 @@ struct TileBackEnd {
         using namespace simd;
         uint64_t shaded = 0;
         const int width = fb.width();
+        // Constant varyings and a shader that reads nothing else: one color for the whole
+        // triangle, shaded here once.
+        std::array<f8, 4> constant_rgba{};
+        bool shaded_once = false;
+        if constexpr (VaryingsOnlyShader<S>) {
+            if (t.constant_varyings) {
+                shader.fragment_batch(interpolate_perspective<Flat>(t, splat(0.0f), splat(0.0f)), splat(0.0f), t.front_facing,
+                                      constant_rgba);
+                shaded_once = true;
+            }
+        }
+        auto shade = [&](f8 i, f8 j, f8 z, std::array<f8, 4>& rgba) {
+            if (shaded_once) rgba = constant_rgba;
+            else shader.fragment_batch(interpolate_perspective<Flat>(t, i, j), z, t.front_facing, rgba);
+        };
         rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
             const f8 j = splat(float(y - t.origin_y));
             float* depth_row = fb.depth_data() + fb.sample_index(0, y);
@@ -190,12 +205,14 @@ struct TileBackEnd {
                 if constexpr (Blended) {
                     if (blend.mode == BlendMode::Custom) {  // shaded now, blended with the row's other groups
                         std::array<f8, 4> rgba;
-                        shader.fragment_batch(interpolate_perspective<Flat>(t, i, j), z, t.front_facing, rgba);
+                        shade(i, j, z, rgba);
                         pending.add(x, pass, quantize_pack_rgba8(rgba));
                         return;
                     }
                 }
-                shade_group<Blended>(shader, blend, color_row, x, width, pass, interpolate_perspective<Flat>(t, i, j), z, t.front_facing);
+                std::array<f8, 4> rgba;
+                shade(i, j, z, rgba);
+                blend_group<Blended>(blend, color_row, x, width, pass, rgba);
             });
             if constexpr (Blended) {
                 if (pending.count > 0) blend_row(blend, color_row, width, pending);

@@ -83,6 +83,9 @@ struct TriangleSetup {
     DepthPlane z;                // window depth
     Plane inv_w;                 // 1/w
     std::array<Plane, N> var_w;  // varying / w
+    // Every varying has the same value at the three corners (or is flat): then var_w holds
+    // the values themselves as constant planes, and interpolation returns them exactly.
+    bool constant_varyings = false;
 
     int64_t edge(int i, int64_t px, int64_t py) const {
         return A[size_t(i)] * px + B[size_t(i)] * py + C[size_t(i)];
@@ -167,6 +170,15 @@ void setup_planes(TriangleSetup<N>& t) {
     }
     for (size_t k = 0; k < size_t(N); ++k)
         if ((Flat >> k) & 1) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
+    // A triangle whose corners carry equal varyings (a flat-shaded face's normal, a plane's
+    // normal, one color) has them everywhere: (a/w)/(1/w) = a exactly in real numbers, and
+    // taking a itself avoids the rounding of that division (and the division).
+    t.constant_varyings = true;
+    for (size_t k = 0; k < size_t(N); ++k)
+        if (!((Flat >> k) & 1) && !(v0.clip.var[k] == v1.clip.var[k] && v1.clip.var[k] == v2.clip.var[k]))
+            t.constant_varyings = false;
+    if (t.constant_varyings)
+        for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
     t.has_planes = true;
 }
 

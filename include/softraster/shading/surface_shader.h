@@ -62,6 +62,7 @@ struct SurfaceShader {
     using Vertex = MeshVertex;
     using Varyings = SurfaceVaryings<Model, Textured, Colored>;
     static constexpr bool kPure = true;  // never discards, no side effects
+    static constexpr bool kVaryingsOnly = Model != Shading::Depth;  // (depth reads the fragment's z)
     const SurfaceUniforms* u;
 
     glm::vec4 vertex(const MeshVertex& in, Varyings& out) const {
