@@ -8,22 +8,14 @@ modes, double-sided materials, non-indexed strips and fans, lines and points. Mo
 models of Debian's assimp-testmodels (a test dependency) in place. ctest renders each with
 softraster and with Mesa llvmpipe (tests/reference) and compares. Run it again after editing;
 the files it writes are committed."""
-import base64, json, math, os, struct
+import base64, json, math, struct
 
-from make_scenes import pattern, png
+from make_scenes import pattern, png, write
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 CORPUS = '/usr/share/assimp/models'
 LIGHTS = {"ambient": [0.2, 0.2, 0.22],
           "directional": [{"direction": [-0.4, -0.7, -0.6], "color": [0.8, 0.78, 0.75]},
                           {"direction": [0.6, -0.2, 0.3], "color": [0.25, 0.25, 0.3]}]}
-
-
-def write(rel, data):
-    path = os.path.join(HERE, rel)
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, 'wb') as f:
-        f.write(data.encode() if isinstance(data, str) else data)
 
 
 def scene(name, objects, eye, target=(0, 0, 0), fov_y=45, width=160, height=120, near=0.1, far=100, **image):
