@@ -135,7 +135,7 @@ public:
     Model load() {
         for (unsigned i = 0; i < scene_.mNumMaterials; ++i) materials_.push_back(read_material(*scene_.mMaterials[i]));
         for (unsigned i = 0; i < scene_.mNumMeshes; ++i) meshes_.push_back(read_mesh(i));
-        place(*scene_.mRootNode, glm::mat4(1.0f), 0);
+        place(*scene_.mRootNode, glm::mat4(1.0f));
         if (model_.objects.empty()) fail("nothing to draw (no triangles, lines or points)");
         for (unsigned i = 0; i < scene_.mNumCameras; ++i) read_camera(*scene_.mCameras[i]);
         note_ignored();
@@ -272,7 +272,6 @@ private:
     MeshUse read_mesh(unsigned index) {
         const aiMesh& in = *scene_.mMeshes[index];
         const std::string which = "mesh " + std::to_string(index) + (in.mName.length ? " ('" + std::string(in.mName.C_Str()) + "')" : "");
-        if (in.mMaterialIndex >= materials_.size()) fail(which + ": material index out of range");
         const MaterialUse& use = materials_[in.mMaterialIndex];
         if (in.mNumBones > 0) ignored_.insert("skins (drawn in the bind pose)");
         if (in.mNumAnimMeshes > 0) ignored_.insert("morph targets");
@@ -336,13 +335,12 @@ private:
         return out;
     }
 
-    void place(const aiNode& node, const glm::mat4& parent, int depth) {
-        if (depth > kMaxNodeDepth) fail("node tree deeper than " + std::to_string(kMaxNodeDepth) + " levels (recursive nodes?)");
+    void place(const aiNode& node, const glm::mat4& parent) {
+        // (check_structure bounded the depth and the indices.)
         const glm::mat4 world = parent * to_glm(node.mTransformation);
         if (!finite(world)) fail("node '" + std::string(node.mName.C_Str()) + "' has a non-finite transform");
         world_[node.mName.C_Str()] = world;
         for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-            if (node.mMeshes[i] >= meshes_.size()) fail("node '" + std::string(node.mName.C_Str()) + "' names a mesh out of range");
             const aiMesh& in = *scene_.mMeshes[node.mMeshes[i]];
             const MeshUse& mesh = meshes_[node.mMeshes[i]];
             if (!mesh.mesh) continue;
@@ -356,7 +354,7 @@ private:
             o.primitive = mesh.primitive;
             model_.objects.push_back(std::move(o));
         }
-        for (unsigned i = 0; i < node.mNumChildren; ++i) place(*node.mChildren[i], world, depth + 1);
+        for (unsigned i = 0; i < node.mNumChildren; ++i) place(*node.mChildren[i], world);
     }
 
     // An assimp camera looks from mPosition along mLookAt with mUp, in its node's space;

@@ -273,7 +273,7 @@ inline void blend_row(const BlendSettings& b, Rgba8* row, int width, const RowGr
     }
     const std::array<i8, 4> k{simd::splat_i(b.constant.r), simd::splat_i(b.constant.g), simd::splat_i(b.constant.b),
                               simd::splat_i(b.constant.a)};
-    std::array<i8, kMax> sf, df;
+    std::array<i8, kMax> sf{}, df{};
     for (size_t c = 0; c < 4; ++c) {
         if (!(b.color_mask & (1u << c))) {
             out[c] = d[c];
