@@ -282,11 +282,14 @@ public:
         if (rect.empty()) return 0;
         const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
         if constexpr (BatchShader<S>) {
-            // Single-sampled, with nothing after the shader that could drop a fragment: the
-            // fast back end's groups of eight, with the stencil test in them.
-            if (ops_.samples == 1 && ops_.early) {
-                const TileBackEnd<S, 1, /*Blended=*/true, DepthStencilTest> back_end{shader_, state_, ops_.tests, ops_.blend,
-                                                                                     triangles(), *target.fb};
+            // Single-sampled and opaque (or writing no color), with nothing after the shader
+            // that could drop a fragment: the fast back end (its fragment queue for small
+            // triangles, groups of eight for big ones), with the stencil test where it tests
+            // depth. Blended stencil draws and partial color masks stay pixel by pixel below:
+            // one more copy of the fast back end per shader would cost build time for rare state.
+            if (ops_.samples == 1 && ops_.early && (ops_.blend.replace || !ops_.blend.color_mask)) {
+                const TileBackEnd<S, 1, /*Blended=*/false, DepthStencilTest> back_end{shader_, state_, ops_.tests, ops_.blend,
+                                                                                      triangles(), *target.fb};
                 return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
             }
         }

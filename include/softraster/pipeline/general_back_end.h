@@ -8,9 +8,9 @@
 // cutoff, no alpha-to-coverage), the tests run first and only the fragments that pass are
 // shaded ("early" tests, as GPUs do): the same picture for less work.
 //
-// Single-sampled draws of a batch shader whose tests can run early (a stencil test, a
-// partial color mask) take the fast back end's groups of eight instead, with
-// DepthStencilTest as its depth stage (GeneralTriangleCommand in draw_commands.h).
+// Single-sampled opaque draws of a batch shader whose tests can run early (a stencil test)
+// take the fast back end instead, with DepthStencilTest as its depth stage
+// (GeneralTriangleCommand in draw_commands.h).
 //
 // To keep the build small this back end is compiled once per shader: the sample count is a
 // run-time value, and only rasterization, the same for every shader, is compiled per count.

@@ -79,8 +79,8 @@ struct TileBackEnd {
     static constexpr int N = kVaryingCount<typename S::Varyings>;
     static constexpr uint64_t Flat = kFlatVaryings<S>;
     using V = typename S::Varyings;
-    // Draws that test stencil (general_back_end.h sends the single-sampled ones here) run
-    // only EightPixelGroups, with the stencil test in the groups.
+    // Draws that test stencil (general_back_end.h sends the single-sampled opaque ones here)
+    // run the fragment queue or EightPixelGroups, with the stencil test where depth is tested.
     static constexpr bool kStencil = std::is_same_v<DepthStencil, DepthStencilTest>;
 
     // By value, not by reference: the tile loops read them after every framebuffer store,
@@ -107,7 +107,7 @@ struct TileBackEnd {
     enum class Strategy { FragmentQueue, EightPixelGroups, PixelByPixel };
     static constexpr bool kQueueable = BatchShader<S> && PureShader<S> && !Blended;
     Strategy strategy() const {
-        if (kQueueable && state.color_write) return Strategy::FragmentQueue;
+        if (kQueueable && state.color_write && blend.color_mask) return Strategy::FragmentQueue;
         return Samples == 1 && BatchShader<S> ? Strategy::EightPixelGroups : Strategy::PixelByPixel;
     }
 
@@ -244,7 +244,13 @@ struct TileBackEnd {
             auto test_group = [&](int y, int x, i8 covered) {
                 need_planes();
                 const f8 z = interpolate_depth(t, to_float(kLaneIndex) + float(x - t.origin_x), splat(float(y - t.origin_y)));
-                const i8 pass = depth.test_group(fb.depth_data() + fb.sample_index(0, y), x, width, z, covered);
+                float* depth_row = fb.depth_data() + fb.sample_index(0, y);
+                i8 pass;
+                if constexpr (kStencil) {
+                    pass = depth.test_group(depth_row, fb.stencil_data() + fb.sample_index(0, y), x, width, z, covered, t.front_facing);
+                } else {
+                    pass = depth.test_group(depth_row, x, width, z, covered);
+                }
                 if (any(pass)) queue_group(y, x, pass, splat_i(1));
             };
             // A triangle of a few narrow rows: a group's coverage at once in 32-bit lanes
