@@ -138,7 +138,7 @@ void BM_TextureBilinear(benchmark::State& state) {
     const Texture tex(img);
     float u = 0.1f;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(tex.sample<Filter::Bilinear, Wrap::Repeat>(glm::vec2(u, 0.3f)));
+        benchmark::DoNotOptimize(tex.sample(glm::vec2(u, 0.3f), Filter::Bilinear, Wrap::Repeat));
         u += 0.001f;
     }
 }

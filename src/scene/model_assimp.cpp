@@ -189,13 +189,29 @@ private:
             m.Get(AI_MATKEY_UVWSRC(type, 0), use.uv_set);
             aiUVTransform transform;
             if (m.Get(AI_MATKEY_UVTRANSFORM(type, 0), transform) == AI_SUCCESS) use.transform = transform;
-            aiTextureMapMode wrap = aiTextureMapMode_Wrap;
-            if (m.Get(AI_MATKEY_MAPPINGMODE_U(type, 0), wrap) == AI_SUCCESS && wrap == aiTextureMapMode_Clamp)
-                mat.wrap = Wrap::Clamp;
-            if (wrap == aiTextureMapMode_Mirror) ignored_.insert("mirrored texture wrapping (drawn as repeat)");
-            int mag_filter = 0;
+            auto wrap_mode = [&](aiTextureMapMode mode) {
+                switch (mode) {
+                    case aiTextureMapMode_Clamp: return Wrap::Clamp;
+                    case aiTextureMapMode_Mirror: return Wrap::Mirror;
+                    case aiTextureMapMode_Decal: return Wrap::Border;  // (transparent black outside)
+                    default: return Wrap::Repeat;
+                }
+            };
+            aiTextureMapMode wrap_u = aiTextureMapMode_Wrap, wrap_v = aiTextureMapMode_Wrap;
+            m.Get(AI_MATKEY_MAPPINGMODE_U(type, 0), wrap_u);
+            m.Get(AI_MATKEY_MAPPINGMODE_V(type, 0), wrap_v);
+            mat.sampler.wrap_s = wrap_mode(wrap_u), mat.sampler.wrap_t = wrap_mode(wrap_v);
+            // glTF's sampler filters (GL enums); without them, bilinear.
+            int mag_filter = 0, min_filter = 0;
             if (m.Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0), mag_filter) == AI_SUCCESS && mag_filter == 9728)
-                mat.filter = Filter::Nearest;  // GL_NEAREST
+                mat.sampler.mag = Filter::Nearest;  // GL_NEAREST
+            if (m.Get(AI_MATKEY_GLTF_MAPPINGFILTER_MIN(type, 0), min_filter) == AI_SUCCESS && min_filter >= 9728 && min_filter <= 9987) {
+                // NEAREST 9728, LINEAR 9729, then {NEAREST, LINEAR}_MIPMAP_{NEAREST, LINEAR} 9984..9987
+                const bool mip = min_filter >= 9984;
+                const int k = mip ? min_filter - 9984 : min_filter - 9728;
+                mat.sampler.min = (k & 1) ? Filter::Bilinear : Filter::Nearest;
+                mat.sampler.mip = !mip ? MipFilter::None : ((k & 2) ? MipFilter::Linear : MipFilter::Nearest);
+            }
             mat.texture = texture(file.C_Str());
             break;
         }

@@ -296,17 +296,67 @@ struct Loader {
         return slot;
     }
 
+    // A value only version 2 knows, in a version 1 file: the same error as a v2 key.
+    void need_v2(const Node& n, bool v2_value) const {
+        if (v2_value && version < 2) n.fail("\"" + n.string() + "\" needs version 2 (set \"version\": 2)");
+    }
+
+    // The material's sampler state (docs/scene-format.md "Textures").
+    void read_sampler(const Node& n, Sampler& s) {
+        if (n.has("filter")) {
+            const Node f = n["filter"];
+            struct Choice { Filter mag, min; MipFilter mip; };
+            const Choice c = f.choice<Choice>({{"nearest", {Filter::Nearest, Filter::Nearest, MipFilter::None}},
+                                               {"bilinear", {Filter::Bilinear, Filter::Bilinear, MipFilter::None}},
+                                               {"trilinear", {Filter::Bilinear, Filter::Bilinear, MipFilter::Linear}}});
+            need_v2(f, c.mip != MipFilter::None);
+            s.mag = c.mag, s.min = c.min, s.mip = c.mip;
+        }
+        if (n.has("min_filter")) {
+            struct Choice { Filter min; MipFilter mip; };
+            const Choice c = n["min_filter"].choice<Choice>({{"nearest", {Filter::Nearest, MipFilter::None}},
+                                                             {"linear", {Filter::Bilinear, MipFilter::None}},
+                                                             {"nearest_mipmap_nearest", {Filter::Nearest, MipFilter::Nearest}},
+                                                             {"linear_mipmap_nearest", {Filter::Bilinear, MipFilter::Nearest}},
+                                                             {"nearest_mipmap_linear", {Filter::Nearest, MipFilter::Linear}},
+                                                             {"linear_mipmap_linear", {Filter::Bilinear, MipFilter::Linear}}});
+            s.min = c.min, s.mip = c.mip;
+        }
+        if (n.has("mag_filter")) s.mag = n["mag_filter"].choice<Filter>({{"nearest", Filter::Nearest}, {"linear", Filter::Bilinear}});
+        if (n.has("wrap")) {
+            const Node w = n["wrap"];
+            auto one = [&](const Node& e) {
+                const Wrap r = e.choice<Wrap>({{"repeat", Wrap::Repeat}, {"clamp", Wrap::Clamp}, {"mirror", Wrap::Mirror}, {"border", Wrap::Border}});
+                need_v2(e, r == Wrap::Mirror || r == Wrap::Border);
+                return r;
+            };
+            if (w.raw().is_array()) {
+                if (version < 2) w.fail("a wrap mode per axis needs version 2 (set \"version\": 2)");
+                if (w.array_size() != 2) w.fail("expected one wrap mode or an array of 2 (s, t)");
+                s.wrap_s = one(w.at(0)), s.wrap_t = one(w.at(1));
+            } else {
+                s.wrap_s = s.wrap_t = one(w);
+            }
+        }
+        if (n.has("border_color")) {
+            s.border = n["border_color"].vec4();
+            for (int c = 0; c < 4; ++c)
+                if (s.border[c] < 0.0f || s.border[c] > 1.0f) n["border_color"].fail("components must be in 0..1");
+        }
+    }
+
     void read_material(const Node& n, Material& m) {
         n.expect_object({"shading", "color", "texture", "filter", "wrap", "specular", "shininess", "blend"},
-                        {"color_mask", "alpha_cutoff", "alpha_to_coverage", "interpolation"}, version);
+                        {"color_mask", "alpha_cutoff", "alpha_to_coverage", "interpolation", "min_filter", "mag_filter",
+                         "border_color"},
+                        version);
         if (n.has("shading"))
             m.shading = n["shading"].choice<Shading>({{"unlit", Shading::Unlit}, {"flat", Shading::Flat},
                                                       {"gouraud", Shading::Gouraud}, {"lambert", Shading::Lambert},
                                                       {"blinn_phong", Shading::BlinnPhong}, {"normals", Shading::Normals},
                                                       {"depth", Shading::Depth}});
         if (n.has("color")) m.color = n["color"].vec4();
-        if (n.has("filter")) m.filter = n["filter"].choice<Filter>({{"nearest", Filter::Nearest}, {"bilinear", Filter::Bilinear}});
-        if (n.has("wrap")) m.wrap = n["wrap"].choice<Wrap>({{"repeat", Wrap::Repeat}, {"clamp", Wrap::Clamp}});
+        read_sampler(n, m.sampler);
         if (n.has("specular")) m.specular = n["specular"].vec3();
         if (n.has("shininess")) m.shininess = float(n["shininess"].number_in(0, HUGE_VAL, false, false, ">= 0"));
         if (n.has("blend")) {

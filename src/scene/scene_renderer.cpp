@@ -170,8 +170,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         u.has_specular = o.material.specular != glm::vec3(0.0f);
         u.shininess = o.material.shininess;
         u.texture = o.material.texture.get();
-        u.filter = o.material.filter;
-        u.wrap = o.material.wrap;
+        u.sampler = o.material.sampler;
         if (d.shading == Shading::Flat) {
             d.flat_mesh = world_face_normal_mesh(*o.mesh, o.model);
             d.mesh = d.flat_mesh.get();

@@ -61,6 +61,7 @@ Scene showcase_scene() {
     // Ground: 40 x 40, reaching far behind the eye, so the near plane clips it.
     Material ground = material(Shading::Lambert, glm::vec4(1.0f));
     ground.texture = checker_texture();
+    ground.sampler.mip = MipFilter::Linear;  // trilinear: the far checkers fade to gray instead of shimmering
     s.objects.push_back(object(std::make_shared<Mesh>(make_plane(40.0, 8)), {0, 0, 0}, {0, 0, 0}, ground));
 
     Material shiny = material(Shading::BlinnPhong, {0.85f, 0.25f, 0.2f, 1.0f});
@@ -71,7 +72,7 @@ Scene showcase_scene() {
     s.objects.push_back(object(sphere, {0.6f, 0.6f, -1.4f}, {0, 0, 0}, material(Shading::Gouraud, {0.3f, 0.8f, 0.4f, 1})));
     Material crate = material(Shading::Lambert, glm::vec4(1.0f));
     crate.texture = ground.texture;
-    crate.filter = Filter::Nearest;
+    crate.sampler = Sampler::plain(Filter::Nearest, Wrap::Repeat);
     s.objects.push_back(object(cube, {2.2f, 0.45f, -0.9f}, {0, 35, 0}, crate));
     s.objects.push_back(object(sphere, {-1.3f, 0.6f, 0.9f}, {0, 0, 0}, material(Shading::Normals, glm::vec4(1.0f))));
 

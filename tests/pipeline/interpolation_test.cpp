@@ -85,3 +85,60 @@ TEST(Interpolation, ConstantVaryingsAreExact) {
     }
     EXPECT_GT(covered, 1000);
 }
+
+namespace {
+// Captures, per pixel, a varying (u, v) and the derivatives interpolation fills in.
+struct UvDerivativeVaryings {
+    glm::vec2 uv;
+    glm::vec4 d;  // du/dx, dv/dx, du/dy, dv/dy
+};
+struct DerivativeCaptureShader {
+    using Vertex = ClipVertexIn;
+    using Varyings = UvDerivativeVaryings;
+    static constexpr int kDerivativeOf = 0;
+    static constexpr int kDerivativeAt = 2;
+    static constexpr uint64_t kFlat = varying_bits(offsetof(UvDerivativeVaryings, d), sizeof(glm::vec4));
+    std::vector<Varyings>* out;
+    int width;
+    glm::vec4 vertex(const Vertex& in, Varyings& v) const {
+        v.uv = glm::vec2(in.value, in.value * in.value);
+        v.d = glm::vec4(0.0f);
+        return in.clip;
+    }
+    bool fragment(const Varyings& v, const FragCoord& f, glm::vec4& c) const {
+        (*out)[size_t(int(f.y) * width + int(f.x))] = v;
+        c = glm::vec4(1.0f);
+        return true;
+    }
+};
+}  // namespace
+
+// Derivatives are GL's coarse ones, per 2x2 quad of pixels (even x and y at its top left):
+// the differences of the perspective-correct values across the quad, the same for its four
+// pixels. Checked where the whole quad is covered, against the values the pixels captured.
+TEST(Interpolation, DerivativesAreDifferencesAcrossTheQuad) {
+    constexpr int W = 96, H = 64;
+    const glm::mat4 proj = glm::perspective(glm::radians(60.0f), float(W) / H, 0.5f, 50.0f);
+    const glm::vec3 p[4] = {{-2, -1, -1}, {2, -1, -1}, {2, 3, -9}, {-2, 3, -9}};
+    const float value[4] = {0.1f, 0.9f, 2.5f, -1.3f};
+    std::vector<ClipVertexIn> v;
+    for (int k = 0; k < 4; ++k) v.push_back({proj * glm::vec4(p[k], 1.0f), value[k]});
+    std::vector<UvDerivativeVaryings> got(size_t(W) * H, UvDerivativeVaryings{glm::vec2(NAN), glm::vec4(NAN)});
+    Framebuffer fb(W, H);
+    Context ctx(fb);
+    ctx.clear(glm::vec4(0));
+    ctx.state.cull = CullMode::None;
+    draw(ctx, DerivativeCaptureShader{&got, W}, v, {0, 1, 2});  // (one triangle: every quad's pixels share its planes)
+    auto at = [&](int x, int y) { return got[size_t(y) * W + size_t(x)]; };
+    int quads = 0;
+    for (int y = 0; y < H; y += 2)
+        for (int x = 0; x < W; x += 2) {
+            const UvDerivativeVaryings tl = at(x, y), tr = at(x + 1, y), bl = at(x, y + 1), br = at(x + 1, y + 1);
+            if (std::isnan(tl.uv.x) || std::isnan(tr.uv.x) || std::isnan(bl.uv.x) || std::isnan(br.uv.x)) continue;
+            const glm::vec4 expected(tr.uv.x - tl.uv.x, tr.uv.y - tl.uv.y, bl.uv.x - tl.uv.x, bl.uv.y - tl.uv.y);
+            for (const UvDerivativeVaryings& px : {tl, tr, bl, br})
+                for (int c = 0; c < 4; ++c) ASSERT_EQ(px.d[c], expected[c]) << x << "," << y << " component " << c;
+            ++quads;
+        }
+    EXPECT_GT(quads, 150);
+}

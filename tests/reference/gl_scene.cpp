@@ -297,6 +297,7 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
                 glBindTexture(GL_TEXTURE_2D, tex);
                 glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
                 glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t->width(), t->height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+                glGenerateMipmap(GL_TEXTURE_2D);  // GL's own chain, not softraster's
             }
             d->texture = tex;
         }
@@ -368,12 +369,26 @@ void GlScene::draw_frame() const {
         glUniform1f(loc("u_shininess"), m.shininess);
         if (d->texture && !d->wire) {
             glBindTexture(GL_TEXTURE_2D, d->texture);
-            const GLint filter = m.filter == softraster::Filter::Nearest ? GL_NEAREST : GL_LINEAR;
-            const GLint wrap = m.wrap == softraster::Wrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+            const softraster::Sampler& s = m.sampler;
+            using softraster::Filter, softraster::MipFilter;
+            auto wrap = [](softraster::Wrap w) -> GLint {
+                switch (w) {
+                    case softraster::Wrap::Repeat: return GL_REPEAT;
+                    case softraster::Wrap::Clamp: return GL_CLAMP_TO_EDGE;
+                    case softraster::Wrap::Mirror: return GL_MIRRORED_REPEAT;
+                    case softraster::Wrap::Border: return GL_CLAMP_TO_BORDER;
+                }
+                return GL_REPEAT;
+            };
+            const bool lin = s.min == Filter::Bilinear;
+            const GLint min = s.mip == MipFilter::None      ? (lin ? GL_LINEAR : GL_NEAREST)
+                              : s.mip == MipFilter::Nearest ? (lin ? GL_LINEAR_MIPMAP_NEAREST : GL_NEAREST_MIPMAP_NEAREST)
+                                                            : (lin ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, s.mag == Filter::Nearest ? GL_NEAREST : GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap(s.wrap_s));
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap(s.wrap_t));
+            glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(s.border));
         }
         // The y flip in the vertex shader mirrors windings: front faces flip too.
         if (o.cull == softraster::CullMode::None) {

@@ -56,8 +56,11 @@ TEST(SceneJson, Defaults) {
     EXPECT_EQ(o.cull, CullMode::Back);
     EXPECT_EQ(o.front_face, FrontFace::CCW);
     EXPECT_EQ(o.material.shading, Shading::Lambert);
-    EXPECT_EQ(o.material.filter, Filter::Bilinear);
-    EXPECT_EQ(o.material.wrap, Wrap::Repeat);
+    EXPECT_EQ(o.material.sampler.mag, Filter::Bilinear);
+    EXPECT_EQ(o.material.sampler.min, Filter::Bilinear);
+    EXPECT_EQ(o.material.sampler.mip, MipFilter::None);
+    EXPECT_EQ(o.material.sampler.wrap_s, Wrap::Repeat);
+    EXPECT_EQ(o.material.sampler.wrap_t, Wrap::Repeat);
     EXPECT_FLOAT_EQ(o.material.shininess, 32);
     EXPECT_EQ(o.material.blend, BlendMode::Opaque);
     EXPECT_EQ(o.mesh->triangle_count(), 12u);

@@ -121,8 +121,9 @@ TEST(ShadingModels, BlinnPhongShininessZeroIsPowZeroZeroIsOne) {
 TEST(ShadingModels, VaryingsHoldOnlyWhatTheModelReads) {
     EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::Depth, false, false>::Varyings>), 1);  // placeholder only
     EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::Lambert, false, false>::Varyings>), 3);
-    EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::Lambert, true, true>::Varyings>), 9);
-    EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::BlinnPhong, true, true>::Varyings>), 12);
+    // (a texture adds uv and its 4 derivatives, filled per pixel for the level of detail)
+    EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::Lambert, true, true>::Varyings>), 13);
+    EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::BlinnPhong, true, true>::Varyings>), 16);
     EXPECT_EQ((kVaryingCount<SurfaceShader<Shading::Gouraud, false, false>::Varyings>), 3);
 }
 
@@ -176,12 +177,14 @@ TEST(ShadingModels, EightFragmentsAtOnceEqualOneAtATime) {
     const Texture texture(img);
     u.texture = &texture;
     for (Filter f : {Filter::Nearest, Filter::Bilinear})
-        for (Wrap w : {Wrap::Repeat, Wrap::Clamp}) {
-            u.filter = f;
-            u.wrap = w;
-            expect_batch_equals_scalar<Shading::Unlit, true, true>(u);
-            expect_batch_equals_scalar<Shading::BlinnPhong, true, false>(u);
-        }
+        for (Wrap w : {Wrap::Repeat, Wrap::Clamp, Wrap::Mirror, Wrap::Border})
+            for (MipFilter m : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear}) {
+                u.sampler = Sampler::plain(f, w);
+                u.sampler.mip = m;
+                u.sampler.border = glm::vec4(0.2f, 0.4f, 0.6f, 0.8f);
+                expect_batch_equals_scalar<Shading::Unlit, true, true>(u);
+                expect_batch_equals_scalar<Shading::BlinnPhong, true, false>(u);
+            }
     u.shininess = 7.5f;  // not a whole number: powf per lane
     expect_batch_equals_scalar<Shading::BlinnPhong, false, true>(u);
     u.shininess = 16.0f;

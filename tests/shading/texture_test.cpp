@@ -1,4 +1,5 @@
-// Texture sampling: orientation, nearest and bilinear filtering, repeat and clamp wrapping.
+// Texture sampling: orientation, nearest and bilinear filtering, the four wrap modes, the
+// mipmap chain, the level of detail and trilinear filtering.
 #include <gtest/gtest.h>
 
 #include "softraster/shading/texture.h"
@@ -58,4 +59,113 @@ TEST(Texture, NonFiniteCoordinatesAreSafe) {
                 const glm::vec4 c = t.sample(glm::vec2(bad, 0.5f), f, w);
                 EXPECT_TRUE(c.a == 1.0f);
             }
+}
+
+namespace {
+// w x h texels, every texel the same gray per level test below, or a pattern.
+Texture pattern_texture(int w, int h) {
+    Image img(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) img.at(x, y) = {uint8_t(x * 255 / std::max(1, w - 1)), uint8_t(y * 37 % 256), uint8_t((x + y) % 2 ? 250 : 10), 255};
+    return Texture(img);
+}
+UvDerivatives isotropic(float texels_per_pixel, int size) {
+    const float d = texels_per_pixel / float(size);
+    return {d, 0.0f, 0.0f, d};
+}
+}  // namespace
+
+// The chain halves to 1x1; each texel of a level is the rounded average of the 2x2 under it.
+TEST(Texture, MipmapChainAveragesTwoByTwo) {
+    const Texture t = pattern_texture(8, 4);
+    ASSERT_EQ(t.levels(), 4);  // 8x4, 4x2, 2x1, 1x1
+    EXPECT_EQ(t.level_width(1), 4);
+    EXPECT_EQ(t.level_height(1), 2);
+    EXPECT_EQ(t.level_width(3), 1);
+    EXPECT_EQ(t.level_height(3), 1);
+    for (int level = 1; level < t.levels(); ++level)
+        for (int j = 0; j < t.level_height(level); ++j)
+            for (int i = 0; i < t.level_width(level); ++i) {
+                const int pw = t.level_width(level - 1), ph = t.level_height(level - 1);
+                for (int c = 0; c < 4; ++c) {
+                    int sum = 0;
+                    for (int dj = 0; dj < 2; ++dj)
+                        for (int di = 0; di < 2; ++di)
+                            sum += int(std::lround(t.texel(level - 1, std::min(2 * i + di, pw - 1), std::min(2 * j + dj, ph - 1))[c] * 255.0f));
+                    EXPECT_EQ(std::lround(t.texel(level, i, j)[c] * 255.0f), (sum + 2) / 4) << level << " " << i << "," << j << " " << c;
+                }
+            }
+}
+
+// GL's level of detail: log2 of the texels a pixel step covers; nearest rounds it, linear
+// takes the two levels around it. Powers of two are exact in llvmpipe's approximation too.
+TEST(Texture, LevelOfDetailFollowsTheFootprint) {
+    const Texture t = pattern_texture(64, 64);  // 7 levels
+    Sampler s = Sampler::plain(Filter::Bilinear, Wrap::Repeat);
+    s.mip = MipFilter::Nearest;
+    EXPECT_FALSE(t.select_lod(isotropic(1.0f, 64), s).minified);  // one texel per pixel: magnification's edge
+    EXPECT_FALSE(t.select_lod(isotropic(0.5f, 64), s).minified);
+    EXPECT_EQ(t.select_lod(isotropic(4.0f, 64), s).level0, 2);
+    EXPECT_EQ(t.select_lod(isotropic(5.6f, 64), s).level0, 2);  // log2 5.6 = 2.49
+    EXPECT_EQ(t.select_lod(isotropic(5.7f, 64), s).level0, 3);  // 2.51
+    EXPECT_EQ(t.select_lod(isotropic(1e6f, 64), s).level0, 6);  // clamped to the 1x1 level
+    s.mip = MipFilter::Linear;
+    LevelChoice c = t.select_lod(isotropic(8.0f, 64), s);
+    EXPECT_TRUE(c.minified);
+    EXPECT_EQ(c.level0, 3);
+    EXPECT_EQ(c.weight, 0.0f);
+    c = t.select_lod(isotropic(12.0f, 64), s);  // log2 144 ~ 7 + (144 / 128 - 1) = 7.125, halved
+    EXPECT_EQ(c.level0, 3);
+    EXPECT_EQ(c.level1, 4);
+    EXPECT_FLOAT_EQ(c.weight, 0.5625f);
+    // The larger of the two axes decides (GL's rho), and a zero footprint is magnification.
+    EXPECT_EQ(t.select_lod(UvDerivatives{0.0f, 0.5f / 64, 4.0f / 64, 0.0f}, s).level0, 2);
+    EXPECT_FALSE(t.select_lod(UvDerivatives{}, s).minified);
+    for (float bad : {NAN, INFINITY})  // no crash, a level in the chain
+        EXPECT_LE(t.select_lod(UvDerivatives{bad, bad, bad, bad}, s).level0, 6);
+}
+
+TEST(Texture, TrilinearBlendsTwoLevels) {
+    const Texture t = pattern_texture(64, 64);
+    Sampler s = Sampler::plain(Filter::Bilinear, Wrap::Repeat);
+    s.mip = MipFilter::Linear;
+    const glm::vec2 uv(0.3f, 0.6f);
+    const UvDerivatives d = isotropic(12.0f, 64);  // levels 3 and 4, weight 0.5625
+    Sampler one = s;
+    one.mip = MipFilter::None;
+    const LevelChoice c = t.select_lod(d, s);
+    // Level k alone, through a texture whose level 0 is that level: the chain's own lookups.
+    auto level_lookup = [&](int level) {
+        Image img(t.level_width(level), t.level_height(level));
+        for (int j = 0; j < img.height; ++j)
+            for (int i = 0; i < img.width; ++i) {
+                const glm::vec4 v = t.texel(level, i, img.height - 1 - j) * 255.0f;
+                img.at(i, j) = {uint8_t(std::lround(v.r)), uint8_t(std::lround(v.g)), uint8_t(std::lround(v.b)), uint8_t(std::lround(v.a))};
+            }
+        return Texture(img).sample(uv, one);
+    };
+    const glm::vec4 a = level_lookup(c.level0), b = level_lookup(c.level1), got = t.sample(uv, d, s);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(got[k], a[k] + (b[k] - a[k]) * 0.5625f, 1e-6f);
+}
+
+TEST(Texture, MirrorAndBorderWrapping) {
+    const Texture t = four_texels();  // bottom row: blue, white; top row: red, green
+    const Sampler mirror = Sampler::plain(Filter::Nearest, Wrap::Mirror);
+    EXPECT_EQ(t.sample(glm::vec2(1.25f, 0.25f), mirror), glm::vec4(1, 1, 1, 1));   // mirrored: white, then blue
+    EXPECT_EQ(t.sample(glm::vec2(1.75f, 0.25f), mirror), glm::vec4(0, 0, 1, 1));
+    EXPECT_EQ(t.sample(glm::vec2(-0.25f, 0.25f), mirror), glm::vec4(0, 0, 1, 1));
+    EXPECT_EQ(t.sample(glm::vec2(2.25f, 0.25f), mirror), glm::vec4(0, 0, 1, 1));  // period 2
+    Sampler border = Sampler::plain(Filter::Nearest, Wrap::Border);
+    border.border = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);
+    EXPECT_EQ(t.sample(glm::vec2(1.25f, 0.25f), border), border.border);
+    EXPECT_EQ(t.sample(glm::vec2(0.25f, 0.25f), border), glm::vec4(0, 0, 1, 1));
+    // Bilinear at the edge: half the edge texel, half the border.
+    border.mag = border.min = Filter::Bilinear;
+    const glm::vec4 edge = t.sample(glm::vec2(0.0f, 0.25f), border);
+    EXPECT_NEAR(edge.r, 0.125f, 1e-6f);
+    EXPECT_NEAR(edge.b, 0.875f, 1e-6f);
+    // Different modes per axis.
+    Sampler mixed = Sampler::plain(Filter::Nearest, Wrap::Repeat);
+    mixed.wrap_t = Wrap::Clamp;
+    EXPECT_EQ(t.sample(glm::vec2(1.25f, 3.0f), mixed), glm::vec4(1, 0, 0, 1));  // u wraps, v holds the top row
 }

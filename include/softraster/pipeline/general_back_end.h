@@ -159,7 +159,7 @@ uint64_t draw_tile_general(const S& shader, const FragmentOps& ops, const Render
     auto on_pixel = [&](const TriangleSetup<N>& t, const PixelSamples& px) {
         const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
         general_fragment(shader, ops, fb, px.x, px.y, px.mask, px.z.data(), interpolate_depth(t, i, j), t.front_facing,
-                         [&] { return from_array<V>(interpolate_perspective<kFlatVaryings<S>>(t, i, j)); }, shaded);
+                         [&] { return from_array<V>(interpolate_varyings<S>(t, i, j)); }, shaded);
     };
     rasterize_tile<kFlatVaryings<S>, N>(ops.samples, triangles, state, tx, ty, rect, on_pixel);
     return shaded;

@@ -119,7 +119,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
                     if (!any(mine)) return;
                     const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
                     shaded += unsigned(__builtin_popcount(bits(mine)));
-                    shade_group</*Blended=*/false>(shader, blend, color, x, width, mine, interpolate_perspective<kFlatVaryings<S>>(setup, i, j),
+                    shade_group</*Blended=*/false>(shader, blend, color, x, width, mine, interpolate_varyings<S>(setup, i, j),
                                                    interpolate_depth(setup, i, j), setup.front_facing);
                 });
             });
@@ -131,7 +131,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
                     if ((px.mask & (1u << s)) && owner[s] == me) mine |= 1u << s;
                 if (!mine) return;
                 const float i = float(px.x - setup.origin_x), j = float(px.y - setup.origin_y);
-                const V v = from_array<V>(interpolate_perspective<kFlatVaryings<S>>(setup, i, j));
+                const V v = from_array<V>(interpolate_varyings<S>(setup, i, j));
                 glm::vec4 color;
                 shader.fragment(v, FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
                 ++shaded;

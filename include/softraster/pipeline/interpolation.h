@@ -7,6 +7,8 @@
 #pragma once
 #include <array>
 
+#include "softraster/pipeline/shader.h"
+#include "softraster/pipeline/simd.h"
 #include "softraster/pipeline/triangle_setup.h"
 
 namespace softraster {
@@ -31,6 +33,35 @@ inline std::array<T, N> interpolate_perspective(const TriangleSetup<N>& t, T i, 
     for (size_t k = 0; k < size_t(N); ++k) {
         if ((Flat >> k) & 1) out[k] = t.var_w[k].at(i, j);  // a0 + 0 i + 0 j: exactly a0
         else out[k] = t.var_w[k].at(i, j) * w;
+    }
+    return out;
+}
+
+// 1 where the pixel's window coordinate origin + i is odd, else 0 (i: a whole offset).
+inline float odd(int origin, float i) { return float((origin + int(i)) & 1); }
+inline simd::f8 odd(int origin, simd::f8 i) { return simd::to_float((simd::splat_i(origin) + simd::to_int(i)) & 1); }
+
+// The varyings shader S reads at pixel offset (i, j), perspective-correct; for a
+// DerivativeShader (shader.h) with the derivatives of its varying a over the pixel's 2x2
+// quad, the pixels of even and odd x by even and odd y (row 0 at the top). With (x0, y0) the
+// quad's top-left pixel, as llvmpipe takes them:
+//   da/dx = a(x0 + 1, y0) - a(x0, y0),   da/dy = a(x0, y0 + 1) - a(x0, y0),
+// each a perspective-correct as above, whether or not those pixels are covered.
+template <class S, int N, class T>
+inline std::array<T, N> interpolate_varyings(const TriangleSetup<N>& t, T i, T j) {
+    std::array<T, N> out = interpolate_perspective<kFlatVaryings<S>>(t, i, j);
+    if constexpr (DerivativeShader<S>) {
+        constexpr size_t a = size_t(S::kDerivativeOf), at = size_t(S::kDerivativeAt);
+        static_assert(((kFlatVaryings<S> >> at) & 15) == 15, "the derivatives' floats are flat varyings");
+        if (t.constant_varyings) return out;  // (they stay 0)
+        const T i0 = i - odd(t.origin_x, i), j0 = j - odd(t.origin_y, j), i1 = i0 + 1.0f, j1 = j0 + 1.0f;
+        const T w00 = 1.0f / t.inv_w.at(i0, j0), w10 = 1.0f / t.inv_w.at(i1, j0), w01 = 1.0f / t.inv_w.at(i0, j1);
+        for (size_t c = 0; c < 2; ++c) {
+            const Plane& p = t.var_w[a + c];
+            const T v00 = p.at(i0, j0) * w00;
+            out[at + c] = p.at(i1, j0) * w10 - v00;
+            out[at + 2 + c] = p.at(i0, j1) * w01 - v00;
+        }
     }
     return out;
 }

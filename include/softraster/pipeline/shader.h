@@ -67,6 +67,19 @@ inline constexpr uint64_t kFlatVaryings = [] {
     else return uint64_t(0);
 }();
 
+// Screen-space derivatives (GLSL's dFdx and dFdy, coarse: one value per 2x2 quad of pixels,
+// as llvmpipe computes them for texture lookups). A shader declares
+//     static constexpr int kDerivativeOf = <index of the first float of a 2-float varying>;
+//     static constexpr int kDerivativeAt = <index of 4 more floats: both d/dx, then both d/dy>;
+// with those 4 floats among its flat varyings (kFlat), left 0 by the vertex shader:
+// interpolation (interpolate_varyings in interpolation.h) fills them at each pixel.
+// (kDerivativeOf = -1: none.)
+template <class S>
+concept DerivativeShader = requires {
+    requires S::kDerivativeOf >= 0;
+    S::kDerivativeAt;
+};
+
 // A shader whose color depends on its varyings alone (not on the fragment's position, depth
 // or facing) says so with `static constexpr bool kVaryingsOnly = true;`: a triangle whose
 // varyings are constant (triangle_setup.h) is then shaded once, not once per pixel.

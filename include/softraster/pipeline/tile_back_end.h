@@ -159,7 +159,7 @@ struct TileBackEnd {
             const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
             shade_fragment<Samples, Blended>(shader, depth, blend, fb, px.x, px.y, px.mask, px.z.data(),
                                        interpolate_depth(t, i, j), t.front_facing,
-                                       [&] { return from_array<V>(interpolate_perspective<Flat>(t, i, j)); }, shaded);
+                                       [&] { return from_array<V>(interpolate_varyings<S>(t, i, j)); }, shaded);
         });
         return shaded;
     }
@@ -176,14 +176,14 @@ struct TileBackEnd {
         bool shaded_once = false;
         if constexpr (VaryingsOnlyShader<S>) {
             if (t.constant_varyings) {
-                shader.fragment_batch(interpolate_perspective<Flat>(t, splat(0.0f), splat(0.0f)), splat(0.0f), t.front_facing,
+                shader.fragment_batch(interpolate_varyings<S>(t, splat(0.0f), splat(0.0f)), splat(0.0f), t.front_facing,
                                       constant_rgba);
                 shaded_once = true;
             }
         }
         auto shade = [&](f8 i, f8 j, f8 z, std::array<f8, 4>& rgba) {
             if (shaded_once) rgba = constant_rgba;
-            else shader.fragment_batch(interpolate_perspective<Flat>(t, i, j), z, t.front_facing, rgba);
+            else shader.fragment_batch(interpolate_varyings<S>(t, i, j), z, t.front_facing, rgba);
         };
         rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
             const f8 j = splat(float(y - t.origin_y));
@@ -238,7 +238,7 @@ struct TileBackEnd {
             const f8 i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
             queued += unsigned(__builtin_popcount(bits(pass)));
             const i8 pixel = (splat_i(int32_t(fb.sample_index(0, y))) + (kLaneIndex + x) * Samples);
-            queue.push(pass, interpolate_depth(t, i, j), interpolate_perspective<Flat>(t, i, j), pixel, samples, t.front_facing);
+            queue.push(pass, interpolate_depth(t, i, j), interpolate_varyings<S>(t, i, j), pixel, samples, t.front_facing);
         };
         if constexpr (Samples == 1) {
             auto test_group = [&](int y, int x, i8 covered) {
@@ -291,7 +291,7 @@ struct TileBackEnd {
                 if (!pass) return;
                 const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
                 ++queued;
-                queue.push(interpolate_depth(t, i, j), interpolate_perspective<Flat>(t, i, j), int32_t(base), pass, t.front_facing);
+                queue.push(interpolate_depth(t, i, j), interpolate_varyings<S>(t, i, j), int32_t(base), pass, t.front_facing);
             });
         }
         return queued;

@@ -24,8 +24,7 @@ struct Material {
     Shading shading = Shading::Lambert;
     glm::vec4 color{1.0f};
     std::shared_ptr<const Texture> texture;  // none: the texture term is 1
-    Filter filter = Filter::Bilinear;
-    Wrap wrap = Wrap::Repeat;
+    Sampler sampler;  // version 1: one filter (nearest or bilinear), repeat or clamp
     glm::vec3 specular{0.0f};
     float shininess = 32.0f;
     BlendMode blend = BlendMode::Opaque;

@@ -43,6 +43,7 @@ struct SurfaceVaryings {
     [[no_unique_address]] MaybeVarying<kNormal, glm::vec3, 1> normal;        // world-space normal
     [[no_unique_address]] MaybeVarying<kIntensity, glm::vec3, 2> intensity;  // Gouraud: lighting at the vertex
     [[no_unique_address]] MaybeVarying<kUv, glm::vec2, 3> uv;
+    [[no_unique_address]] MaybeVarying<kUv, glm::vec4, 6> uv_derivatives;  // d(u, v)/dx, d(u, v)/dy: filled per pixel
     [[no_unique_address]] MaybeVarying<kColor, glm::vec4, 4> color;          // vertex color
     [[no_unique_address]] MaybeVarying<!kAny, float, 5> unused;              // a struct has at least one float
 
@@ -51,7 +52,8 @@ struct SurfaceVaryings {
     static constexpr int kNormalAt = kWorldAt + 3 * kWorld;
     static constexpr int kIntensityAt = kNormalAt + 3 * kNormal;
     static constexpr int kUvAt = kIntensityAt + 3 * kIntensity;
-    static constexpr int kColorAt = kUvAt + 2 * kUv;
+    static constexpr int kUvDerivativesAt = kUvAt + 2 * kUv;
+    static constexpr int kColorAt = kUvDerivativesAt + 4 * kUv;
     static constexpr int kFloats = kAny ? kColorAt + 4 * kColor : 1;
 };
 
@@ -63,6 +65,10 @@ struct SurfaceShader {
     using Varyings = SurfaceVaryings<Model, Textured, Colored>;
     static constexpr bool kPure = true;  // never discards, no side effects
     static constexpr bool kVaryingsOnly = Model != Shading::Depth;  // (depth reads the fragment's z)
+    // A texture's level of detail needs the derivatives of uv (shader.h).
+    static constexpr int kDerivativeOf = Varyings::kUv ? Varyings::kUvAt : -1;
+    static constexpr int kDerivativeAt = Varyings::kUvDerivativesAt;
+    static constexpr uint64_t kFlat = Varyings::kUv ? varying_bits(sizeof(float) * kDerivativeAt, sizeof(glm::vec4)) : 0;
     const SurfaceUniforms* u;
 
     glm::vec4 vertex(const MeshVertex& in, Varyings& out) const {
@@ -82,7 +88,10 @@ struct SurfaceShader {
         } else {
             glm::vec4 base = u->color;
             if constexpr (Varyings::kColor) base *= in.color;
-            if constexpr (Varyings::kUv) base *= u->texture->sample(in.uv, u->filter, u->wrap);
+            if constexpr (Varyings::kUv) {
+                const glm::vec4 d = in.uv_derivatives;
+                base *= u->texture->sample(in.uv, UvDerivatives{d.x, d.y, d.z, d.w}, u->sampler);
+            }
             if constexpr (Model == Shading::Unlit) {
                 out = base;
             } else if constexpr (Model == Shading::Gouraud) {
@@ -116,7 +125,8 @@ struct SurfaceShader {
                 for (size_t c = 0; c < 4; ++c) base[c] *= in[size_t(Varyings::kColorAt) + c];
             if constexpr (Varyings::kUv) {
                 std::array<f8, 4> tex;
-                u->texture->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], u->filter, u->wrap, tex);
+                constexpr size_t d = Varyings::kUvDerivativesAt;
+                u->texture->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], {in[d], in[d + 1], in[d + 2], in[d + 3]}, u->sampler, tex);
                 for (size_t c = 0; c < 4; ++c) base[c] *= tex[c];
             }
             if constexpr (Model == Shading::Unlit) {

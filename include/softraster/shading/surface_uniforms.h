@@ -23,8 +23,7 @@ struct SurfaceUniforms {
     bool has_specular = false;  // specular != 0: otherwise the term is skipped
     float shininess = 32.0f;
     const Texture* texture = nullptr;
-    Filter filter = Filter::Bilinear;
-    Wrap wrap = Wrap::Repeat;
+    Sampler sampler;
 };
 
 }  // namespace softraster

@@ -1,11 +1,18 @@
-// Textures and their sampling (spec "Textures"): 8-bit texels, (0, 0) at the bottom-left of
-// the picture as displayed, texel centers at ((i + 0.5) / w, (j + 0.5) / h), nearest or
-// bilinear (GL_LINEAR, no mipmaps) filtering, repeat or clamp-to-edge wrapping.
+// Textures and their sampling (docs/scene-format.md "Textures"): 8-bit texels, (0, 0) at the
+// bottom-left of the picture as displayed, texel centers at ((i + 0.5) / w, (j + 0.5) / h).
+//
+// A texture keeps its mipmap chain (level k is max(1, w >> k) by max(1, h >> k), each texel
+// the average of the 2x2 texels under it, as glGenerateMipmap makes them). A Sampler is
+// GL's sampler state: a filter within a level for magnification and one for minification,
+// how the levels are chosen (none, nearest, linear: trilinear filtering) and a wrap mode per
+// axis (repeat, clamp to edge, mirrored repeat, clamp to a border color).
+//
+// Which level: from the screen-space derivatives of (u, v) over the pixel's 2x2 quad (GL's
+// level of detail, computed as Mesa llvmpipe computes it; select_lod in texture.cpp).
 #pragma once
+#include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <array>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -16,50 +23,77 @@
 
 namespace softraster {
 
-enum class Filter { Nearest, Bilinear };
-enum class Wrap { Repeat, Clamp };
+enum class Filter { Nearest, Bilinear };          // within a level: GL_NEAREST, GL_LINEAR
+enum class MipFilter { None, Nearest, Linear };  // between levels: ..._MIPMAP_NEAREST, ..._MIPMAP_LINEAR
+enum class Wrap { Repeat, Clamp, Mirror, Border };
+
+struct Sampler {
+    Filter mag = Filter::Bilinear;
+    Filter min = Filter::Bilinear;
+    MipFilter mip = MipFilter::None;
+    Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+    glm::vec4 border{0.0f};  // GL_TEXTURE_BORDER_COLOR
+
+    // One filter, no mipmaps, one wrap mode (scene format version 1's choices).
+    static Sampler plain(Filter f, Wrap w) { return {f, f, MipFilter::None, w, w, glm::vec4(0.0f)}; }
+    // Whether the level of detail changes anything: otherwise level 0 with the one filter.
+    bool uses_lod() const { return mip != MipFilter::None || min != mag; }
+};
+
+// d(u, v)/dx and d(u, v)/dy at a pixel: the differences across its 2x2 quad (GL's coarse
+// derivatives; interpolate_varyings in interpolation.h).
+struct UvDerivatives {
+    float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
+};
+
+// The level(s) a lookup reads, from select_lod.
+struct LevelChoice {
+    bool minified = false;  // the min filter applies (otherwise the mag filter, on level 0)
+    int level0 = 0, level1 = 0;
+    float weight = 0.0f;    // of level1 (trilinear)
+};
 
 class Texture {
 public:
     explicit Texture(const Image& image);  // image row 0 is the top of the picture
 
-    int width() const { return width_; }
-    int height() const { return height_; }
-    // Texel (i, j), j counted from the bottom row, as floats in [0, 1].
-    glm::vec4 texel(int i, int j) const {
-        const Rgba8 t = texels_[size_t(j) * size_t(width_) + size_t(i)];
+    int width() const { return levels_[0].width; }
+    int height() const { return levels_[0].height; }
+    int levels() const { return int(levels_.size()); }
+    int level_width(int level) const { return levels_[size_t(level)].width; }
+    int level_height(int level) const { return levels_[size_t(level)].height; }
+    // Texel (i, j) of a level, j counted from the bottom row, as floats in [0, 1].
+    glm::vec4 texel(int level, int i, int j) const {
+        const Level& l = levels_[size_t(level)];
+        const Rgba8 t = l.texels[size_t(j) * size_t(l.width) + size_t(i)];
         return glm::vec4(t.r, t.g, t.b, t.a) * (1.0f / 255.0f);
     }
+    glm::vec4 texel(int i, int j) const { return texel(0, i, j); }
 
-    template <Filter F, Wrap W>
-    glm::vec4 sample(glm::vec2 uv) const;
-    // The same with filter and wrap chosen at run time.
-    glm::vec4 sample(glm::vec2 uv, Filter f, Wrap w) const {
-        if (f == Filter::Nearest) return w == Wrap::Repeat ? sample<Filter::Nearest, Wrap::Repeat>(uv) : sample<Filter::Nearest, Wrap::Clamp>(uv);
-        return w == Wrap::Repeat ? sample<Filter::Bilinear, Wrap::Repeat>(uv) : sample<Filter::Bilinear, Wrap::Clamp>(uv);
-    }
-    // Eight lookups at once (u[l], v[l]) -> (r, g, b, a)[l], each as sample() computes it.
+    // A lookup where the texture is magnified (level 0, the mag filter).
+    glm::vec4 sample(glm::vec2 uv, const Sampler& s) const;
+    glm::vec4 sample(glm::vec2 uv, Filter f, Wrap w) const { return sample(uv, Sampler::plain(f, w)); }
+    // A lookup with the level of detail from the derivatives.
+    glm::vec4 sample(glm::vec2 uv, const UvDerivatives& d, const Sampler& s) const;
+    // Eight lookups at once, each as sample() computes it. d: du/dx, dv/dx, du/dy, dv/dy.
     // Out of line: the eight-pixel shaders call it from every tile loop they are inlined
     // into, and one compiled copy (a call per eight texels) keeps the build small.
-    void sample8(const simd::f8& u, const simd::f8& v, Filter f, Wrap w, std::array<simd::f8, 4>& rgba) const;
+    void sample8(const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d, const Sampler& s,
+                 std::array<simd::f8, 4>& rgba) const;
+
+    LevelChoice select_lod(const UvDerivatives& d, const Sampler& s) const;
 
 private:
-    int width_, height_;
-    std::vector<Rgba8> texels_;  // bottom row first
+    struct Level {
+        int width, height;
+        std::vector<Rgba8> texels;  // bottom row first
+    };
+    std::vector<Level> levels_;
+    template <Filter F>
+    glm::vec4 sample_level(int level, glm::vec2 uv, const Sampler& s) const;
 };
 
 namespace detail {
-// Texel index i along an axis of n texels. Repeat wraps (GL_REPEAT); clamp stays on the
-// edge texels (GL_CLAMP_TO_EDGE). Callers pass i in [-1, n] (coordinates are reduced
-// first), so repeat needs no division.
-template <Wrap W>
-inline int wrap_texel(int i, int n) {
-    if constexpr (W == Wrap::Repeat) {
-        return i < 0 ? i + n : (i >= n ? i - n : i);
-    } else {
-        return i < 0 ? 0 : (i >= n ? n - 1 : i);
-    }
-}
 // floor(t) as an int, for any float: NaN and huge values are pinned to a safe range first
 // (a float -> int conversion out of range is undefined behaviour).
 inline int floor_to_int(float t) {
@@ -68,37 +102,30 @@ inline int floor_to_int(float t) {
     const int i = int(t);
     return float(i) > t ? i - 1 : i;
 }
-// Coordinate in [0, n) (repeat) or a bounded range (clamp) before scaling, so that texel
-// arithmetic stays exact and in int range for any uv.
-template <Wrap W>
-inline float reduce(float u) {
-    if constexpr (W == Wrap::Repeat) {
+// Coordinate in [0, 1) (repeat), [0, 2) (mirror) or a bounded range (clamp, border) before
+// scaling, so that texel arithmetic stays exact and in int range for any uv.
+inline float reduce(float u, Wrap w) {
+    if (w == Wrap::Repeat || w == Wrap::Mirror) {
         if (!(u >= -1.0e6f && u <= 1.0e6f)) return 0.0f;
-        return u - float(floor_to_int(u));
-    } else {
-        return u != u ? 0.0f : (u < -1.0f ? -1.0f : (u > 2.0f ? 2.0f : u));
+        const float period = w == Wrap::Repeat ? 1.0f : 2.0f;  // mirrored repeat: 2 texture widths
+        return u - period * float(floor_to_int(u / period));
     }
+    return u != u ? 0.0f : (u < -1.0f ? -1.0f : (u > 2.0f ? 2.0f : u));
+}
+// Texel index i along an axis of n texels (GL 4.6, table 8.20), or -1 for the border color.
+// Callers pass i in [-1, 2n] (coordinates are reduced first), so no division is needed.
+inline int wrap_texel(int i, int n, Wrap w) {
+    switch (w) {
+        case Wrap::Repeat: return i < 0 ? i + n : (i >= n ? i - n : i);
+        case Wrap::Clamp: return i < 0 ? 0 : (i >= n ? n - 1 : i);
+        case Wrap::Mirror: {  // period 2n: i, then the axis backwards
+            const int m = i < 0 ? i + 2 * n : (i >= 2 * n ? i - 2 * n : i);
+            return m < n ? m : 2 * n - 1 - m;
+        }
+        case Wrap::Border: return i < 0 || i >= n ? -1 : i;
+    }
+    return 0;
 }
 }  // namespace detail
-
-template <Filter F, Wrap W>
-glm::vec4 Texture::sample(glm::vec2 uv) const {
-    const float u = detail::reduce<W>(uv.x) * float(width_);
-    const float v = detail::reduce<W>(uv.y) * float(height_);
-    if constexpr (F == Filter::Nearest) {
-        return texel(detail::wrap_texel<W>(detail::floor_to_int(u), width_),
-                     detail::wrap_texel<W>(detail::floor_to_int(v), height_));
-    } else {
-        // Blend the four nearest texel centers: texel i's center is at i + 0.5.
-        const float x = u - 0.5f, y = v - 0.5f;
-        const int i0 = detail::floor_to_int(x), j0 = detail::floor_to_int(y);
-        const float fx = x - float(i0), fy = y - float(j0);
-        const int ia = detail::wrap_texel<W>(i0, width_), ib = detail::wrap_texel<W>(i0 + 1, width_);
-        const int ja = detail::wrap_texel<W>(j0, height_), jb = detail::wrap_texel<W>(j0 + 1, height_);
-        const glm::vec4 bottom = texel(ia, ja) * (1.0f - fx) + texel(ib, ja) * fx;
-        const glm::vec4 top = texel(ia, jb) * (1.0f - fx) + texel(ib, jb) * fx;
-        return bottom * (1.0f - fy) + top * fy;
-    }
-}
 
 }  // namespace softraster
