@@ -107,8 +107,10 @@ inline int floor_to_int(float t) {
 inline float reduce(float u, Wrap w) {
     if (w == Wrap::Repeat || w == Wrap::Mirror) {
         if (!(u >= -1.0e6f && u <= 1.0e6f)) return 0.0f;
-        const float period = w == Wrap::Repeat ? 1.0f : 2.0f;  // mirrored repeat: 2 texture widths
-        return u - period * float(floor_to_int(u / period));
+        // mirrored repeat: a period of 2 texture widths. (Times 1/period, not divided by
+        // it: the same bits for a power of two, without a division per lookup.)
+        const bool mirror = w == Wrap::Mirror;
+        return u - (mirror ? 2.0f : 1.0f) * float(floor_to_int(u * (mirror ? 0.5f : 1.0f)));
     }
     return u != u ? 0.0f : (u < -1.0f ? -1.0f : (u > 2.0f ? 2.0f : u));
 }
