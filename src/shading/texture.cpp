@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstring>
 #include <stdexcept>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
 
 namespace softraster {
 
@@ -43,14 +48,34 @@ inline float mantissa_of(float x) { return std::bit_cast<float>((std::bit_cast<u
 
 Texture::Texture(const Image& image) {
     if (image.width < 1 || image.height < 1) throw std::invalid_argument("texture image is empty");
-    Level base{image.width, image.height, std::vector<Rgba8>(size_t(image.width) * size_t(image.height))};
-    for (int j = 0; j < base.height; ++j)  // flip: texel row 0 is the bottom of the picture
-        for (int i = 0; i < base.width; ++i) base.texels[size_t(j) * size_t(base.width) + size_t(i)] = image.at(i, base.height - 1 - j);
-    levels_.push_back(std::move(base));
-    while (levels_.back().width > 1 || levels_.back().height > 1) {
-        const Level& l = levels_.back();
-        const int w = std::max(1, l.width / 2), h = std::max(1, l.height / 2);
-        levels_.push_back(Level{w, h, downsample(l.texels, l.width, l.height, w, h)});
+    // The chain row by row first (downsample reads it so), then into tiles.
+    std::vector<std::vector<Rgba8>> rows;
+    std::vector<Rgba8> base(size_t(image.width) * size_t(image.height));
+    for (int j = 0; j < image.height; ++j)  // flip: texel row 0 is the bottom of the picture
+        for (int i = 0; i < image.width; ++i) base[size_t(j) * size_t(image.width) + size_t(i)] = image.at(i, image.height - 1 - j);
+    rows.push_back(std::move(base));
+    int offset = 0;
+    for (int w = image.width, h = image.height;; w = std::max(1, w / 2), h = std::max(1, h / 2)) {
+        if (!levels_.empty()) rows.push_back(downsample(rows.back(), levels_.back().width, levels_.back().height, w, h));
+        const int tiles_x = (w + 3) / 4, tiles_y = (h + 3) / 4;
+        levels_.push_back(Level{w, h, tiles_x, offset});
+        offset += tiles_x * tiles_y * 16;
+        if (w == 1 && h == 1) break;
+    }
+    for (size_t k = 0; k < 16; ++k) {
+        const Level& l = levels_[std::min(k, levels_.size() - 1)];
+        tables_.width[k] = l.width, tables_.height[k] = l.height, tables_.tiles_x[k] = l.tiles_x, tables_.offset[k] = l.offset;
+    }
+    storage_.assign(size_t(offset) + 15, 0u);
+    aligned_ = (64 - reinterpret_cast<uintptr_t>(storage_.data()) % 64) % 64 / sizeof(uint32_t);
+    uint32_t* out = storage_.data() + aligned_;
+    for (size_t k = 0; k < levels_.size(); ++k) {
+        const Level& l = levels_[k];
+        for (int j = 0; j < l.height; ++j)
+            for (int i = 0; i < l.width; ++i) {
+                const Rgba8 t = rows[k][size_t(j) * size_t(l.width) + size_t(i)];
+                out[texel_index(l, i, j)] = uint32_t(t.r) | uint32_t(t.g) << 8 | uint32_t(t.b) << 16 | uint32_t(t.a) << 24;
+            }
     }
 }
 
@@ -124,21 +149,162 @@ glm::vec4 Texture::sample(glm::vec2 uv, const UvDerivatives& d, const Sampler& s
     return c0 + (at(c.level1) - c0) * c.weight;
 }
 
+// ---- eight lookups at once
+//
+// The arithmetic of select_lod and sample_level, lane by lane the same operations in the
+// same order (so the bits agree with sample()), but on eight lanes: each lane may read
+// another level (the level of detail is per 2x2 quad), so a level's size and offset are
+// per lane too, and the four texels of each bilinear footprint are gathered.
 namespace {
-// flatten: the lookup inlined into the lane loop (left to itself GCC calls it per lane).
-[[gnu::flatten]] void sample_lanes(const Texture& t, const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d,
-                                   const Sampler& s, std::array<simd::f8, 4>& rgba) {
-    for (int l = 0; l < simd::kLanes; ++l) {
-        const glm::vec4 c = t.sample(glm::vec2(u[l], v[l]), UvDerivatives{d[0][l], d[1][l], d[2][l], d[3][l]}, s);
-        for (int k = 0; k < 4; ++k) rgba[size_t(k)][l] = c[k];
-    }
+
+using simd::f8;
+using simd::i8;
+
+// detail::floor_to_int on eight lanes.
+inline i8 floor_to_int8(f8 t) {
+    const i8 i = simd::to_int(simd::select((t > -1.0e8f) & (t <= 1.0e8f), t, simd::splat(0.0f)));
+    const i8 floored = simd::select(simd::to_float(i) > t, i - 1, i);
+    return simd::select(t > 1.0e8f, simd::splat_i(100000000), simd::select(t > -1.0e8f, floored, simd::splat_i(-100000000)));
 }
+
+// detail::reduce on eight lanes (the wrap mode is the same for all).
+inline f8 reduce8(f8 u, Wrap w) {
+    if (w == Wrap::Repeat || w == Wrap::Mirror) {
+        const bool mirror = w == Wrap::Mirror;
+        const f8 r = u - (mirror ? 2.0f : 1.0f) * simd::to_float(floor_to_int8(u * (mirror ? 0.5f : 1.0f)));
+        return simd::select((u >= -1.0e6f) & (u <= 1.0e6f), r, simd::splat(0.0f));
+    }
+    const f8 c = simd::select(u < -1.0f, simd::splat(-1.0f), simd::select(u > 2.0f, simd::splat(2.0f), u));
+    return simd::select(u == u, c, simd::splat(0.0f));
+}
+
+// detail::wrap_texel on eight lanes, n texels per lane.
+inline i8 wrap_texel8(i8 i, i8 n, Wrap w) {
+    switch (w) {
+        case Wrap::Repeat: return simd::select(i < 0, i + n, simd::select(i >= n, i - n, i));
+        case Wrap::Clamp: return simd::select(i < 0, simd::splat_i(0), simd::select(i >= n, n - 1, i));
+        case Wrap::Mirror: {
+            const i8 n2 = n + n;
+            const i8 m = simd::select(i < 0, i + n2, simd::select(i >= n2, i - n2, i));
+            return simd::select(m < n, m, n2 - 1 - m);
+        }
+        case Wrap::Border: return simd::select((i < 0) | (i >= n), simd::splat_i(-1), i);
+    }
+    return i;
+}
+
+// p[index[k]] for each lane: AVX2's gather on that path, a loop on the other.
+template <bool Wide>
+inline i8 gather(const uint32_t* p, i8 index) {
+    i8 r;
+    for (int k = 0; k < simd::kLanes; ++k) r[k] = int32_t(p[index[k]]);
+    return r;
+}
+#if SOFTRASTER_HAS_AVX2_PATH
+template <>
+[[gnu::target("avx2")]] inline i8 gather<true>(const uint32_t* p, i8 index) {
+    return i8(_mm256_i32gather_epi32(reinterpret_cast<const int*>(p), __m256i(index), 4));
+}
+#endif
+
+// A level's numbers, per lane.
+struct LaneLevels {
+    i8 width, height, tiles_x, offset;
+};
+
 }  // namespace
 
-// In the CPU's best copy (simd.h), lane by lane with sample()'s arithmetic.
-void Texture::sample8(const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d, const Sampler& s,
-                      std::array<simd::f8, 4>& rgba) const {
-    simd::on_best_path([&]<bool>() { sample_lanes(*this, u, v, d, s, rgba); });
+template <bool Wide>
+void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
+    using simd::select, simd::splat, simd::splat_i, simd::to_float;
+    // Which level(s) and filter each lane takes (select_lod).
+    i8 level0 = splat_i(0), level1 = splat_i(0), nearest = splat_i(s.mag == Filter::Nearest ? -1 : 0);
+    f8 weight = splat(0.0f);
+    if (s.uses_lod()) {
+        const f8 ax = d[0] * float(width()), bx = d[1] * float(height()), ay = d[2] * float(width()), by = d[3] * float(height());
+        const f8 rx = ax * ax + bx * bx, ry = ay * ay + by * by;
+        const f8 rho2 = select(rx > ry, rx, ry);
+        const i8 minified = rho2 > 1.0f;
+        nearest = select(minified, splat_i(s.min == Filter::Nearest ? -1 : 0), nearest);
+        const i8 bits = std::bit_cast<i8>(rho2);
+        const i8 exponent = ((bits >> 23) & 255) - 127;
+        const int last = levels() - 1;
+        if (s.mip == MipFilter::Nearest) {
+            const i8 l = (exponent + 1) >> 1;
+            level0 = level1 = select(minified, select(l < 0, splat_i(0), select(l > last, splat_i(last), l)), splat_i(0));
+        } else if (s.mip == MipFilter::Linear) {
+            const i8 mbits = (bits & 0x007fffff) | 0x3f800000;
+            const f8 lod = 0.5f * (to_float(exponent) + (std::bit_cast<f8>(mbits) - 1.0f));
+            const i8 i = floor_to_int8(lod);
+            const i8 inside = minified & (i >= 0) & (i < last);
+            level0 = select(minified & (i >= last), splat_i(last), select(inside, i, splat_i(0)));
+            level1 = select(inside, i + 1, level0);
+            weight = select(inside, lod - to_float(i), splat(0.0f));
+        }
+    }
+    const bool two_levels = s.mip == MipFilter::Linear && simd::any(weight != 0.0f);
+    auto lane_levels = [&](i8 level) {
+        LaneLevels r{};
+        if (!simd::any(level != 0)) {
+            const Level& l = levels_[0];
+            return LaneLevels{splat_i(l.width), splat_i(l.height), splat_i(l.tiles_x), splat_i(l.offset)};
+        }
+        if (levels() <= 16) {  // a texture under 65536 texels a side: two table lookups per number
+            const i8 high = level >= 8, index = level & 7;
+            auto pick = [&](const std::array<int32_t, 16>& table) {
+                i8 low_half, high_half;
+                std::memcpy(&low_half, table.data(), sizeof(i8));
+                std::memcpy(&high_half, table.data() + 8, sizeof(i8));
+                return select(high, simd::permute(high_half, index), simd::permute(low_half, index));
+            };
+            return LaneLevels{pick(tables_.width), pick(tables_.height), pick(tables_.tiles_x), pick(tables_.offset)};
+        }
+        for (int k = 0; k < simd::kLanes; ++k) {
+            const Level& l = levels_[size_t(level[k])];
+            r.width[k] = l.width, r.height[k] = l.height, r.tiles_x[k] = l.tiles_x, r.offset[k] = l.offset;
+        }
+        return r;
+    };
+    // sample_level: nearest lanes take the bilinear formula at x = u with weights 0, which
+    // gives exactly the one texel (t * 1 + t' * 0 = t).
+    const f8 half = select(nearest, splat(0.0f), splat(0.5f));
+    const f8 ur = reduce8(u, s.wrap_s), vr = reduce8(v, s.wrap_t);
+    const uint32_t* texels = this->texels();
+    const bool has_border = s.wrap_s == Wrap::Border || s.wrap_t == Wrap::Border;
+    auto at_level = [&](i8 level, std::array<f8, 4>& out) {
+        const LaneLevels l = lane_levels(level);
+        const f8 x = ur * to_float(l.width) - half, y = vr * to_float(l.height) - half;
+        const i8 i0 = floor_to_int8(x), j0 = floor_to_int8(y);
+        const f8 fx = select(nearest, splat(0.0f), x - to_float(i0)), fy = select(nearest, splat(0.0f), y - to_float(j0));
+        const i8 ia = wrap_texel8(i0, l.width, s.wrap_s), ib = wrap_texel8(i0 + 1, l.width, s.wrap_s);
+        const i8 ja = wrap_texel8(j0, l.height, s.wrap_t), jb = wrap_texel8(j0 + 1, l.height, s.wrap_t);
+        std::array<f8, 4> c[4];  // the footprint's texels: (ia, ja), (ib, ja), (ia, jb), (ib, jb)
+        const i8 is[4] = {ia, ib, ia, ib}, js[4] = {ja, ja, jb, jb};
+        for (int t = 0; t < 4; ++t) {
+            const i8 border = (is[t] < 0) | (js[t] < 0);  // (never without a border wrap mode)
+            const i8 index = l.offset + ((js[t] >> 2) * l.tiles_x + (is[t] >> 2)) * 16 + (js[t] & 3) * 4 + (is[t] & 3);
+            const i8 texel = gather<Wide>(texels, has_border ? select(border, splat_i(0), index) : index);
+            for (int k = 0; k < 4; ++k) {
+                const f8 value = to_float((texel >> (8 * k)) & 255) * (1.0f / 255.0f);
+                c[t][size_t(k)] = has_border ? select(border, splat(s.border[k]), value) : value;
+            }
+        }
+        for (size_t k = 0; k < 4; ++k) {
+            const f8 bottom = c[0][k] * (1.0f - fx) + c[1][k] * fx, top = c[2][k] * (1.0f - fx) + c[3][k] * fx;
+            out[k] = bottom * (1.0f - fy) + top * fy;
+        }
+    };
+    at_level(level0, rgba);
+    if (two_levels) {
+        std::array<f8, 4> c1;
+        at_level(level1, c1);
+        for (size_t k = 0; k < 4; ++k) rgba[k] = rgba[k] + (c1[k] - rgba[k]) * weight;
+    }
+}
+
+// In the CPU's best copy (simd.h).
+void Texture::sample8(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
+    simd::on_best_path([&]<bool Wide>() { sample_lanes<Wide>(u, v, d, s, rgba); });
 }
 
 }  // namespace softraster

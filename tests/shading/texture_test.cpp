@@ -1,5 +1,10 @@
 // Texture sampling: orientation, nearest and bilinear filtering, the four wrap modes, the
 // mipmap chain, the level of detail and trilinear filtering.
+#include <bit>
+#include <cmath>
+#include <random>
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "softraster/shading/texture.h"
@@ -168,4 +173,47 @@ TEST(Texture, MirrorAndBorderWrapping) {
     Sampler mixed = Sampler::plain(Filter::Nearest, Wrap::Repeat);
     mixed.wrap_t = Wrap::Clamp;
     EXPECT_EQ(t.sample(glm::vec2(1.25f, 3.0f), mixed), glm::vec4(1, 0, 0, 1));  // u wraps, v holds the top row
+}
+
+// sample8 (eight lanes, gathers, a level per lane) gives the bits of sample() lane by lane,
+// on both code paths: every filter, mip mode and wrap pair, sizes that are not multiples of
+// the 4x4 storage tiles, derivatives from far magnified to far minified, and coordinates
+// that are huge, negative or not numbers.
+TEST(Texture, EightLookupsAtOnceEqualOneAtATime) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> coord(-3.0f, 3.0f), log_scale(-12.0f, 4.0f), unit(-1.0f, 1.0f);
+    const float odd[] = {NAN, INFINITY, -INFINITY, 3e38f, -2e7f, 1.0f, 0.0f, -0.0f};
+    for (const auto& [w, h] : {std::pair{37, 21}, std::pair{64, 64}, std::pair{1, 5}}) {
+        const Texture t = pattern_texture(w, h);
+        for (bool generic : {false, true}) {
+            simd::use_generic_path(generic);
+            for (Filter mag : {Filter::Nearest, Filter::Bilinear})
+                for (Filter min : {Filter::Nearest, Filter::Bilinear})
+                    for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear})
+                        for (Wrap ws : {Wrap::Repeat, Wrap::Clamp, Wrap::Mirror, Wrap::Border})
+                            for (Wrap wt : {Wrap::Repeat, Wrap::Mirror, Wrap::Border}) {
+                                const Sampler s{mag, min, mip, ws, wt, glm::vec4(0.1f, 0.3f, 0.5f, 0.7f)};
+                                for (int trial = 0; trial < 12; ++trial) {
+                                    simd::f8 u, v;
+                                    std::array<simd::f8, 4> d;
+                                    for (int l = 0; l < simd::kLanes; ++l) {
+                                        u[l] = trial == 0 ? odd[l] : coord(rng);
+                                        v[l] = trial == 1 ? odd[7 - l] : coord(rng);
+                                        const float scale = std::exp2(log_scale(rng));  // a quad per pair of lanes
+                                        for (auto& dk : d) dk[l] = l % 2 ? dk[l - 1] : scale * unit(rng);
+                                    }
+                                    std::array<simd::f8, 4> got;
+                                    t.sample8(u, v, d, s, got);
+                                    for (int l = 0; l < simd::kLanes; ++l) {
+                                        const glm::vec4 want = t.sample(glm::vec2(u[l], v[l]), UvDerivatives{d[0][l], d[1][l], d[2][l], d[3][l]}, s);
+                                        for (int k = 0; k < 4; ++k)
+                                            ASSERT_EQ(std::bit_cast<uint32_t>(got[size_t(k)][l]), std::bit_cast<uint32_t>(want[k]))
+                                                << w << "x" << h << " generic " << generic << " mag " << int(mag) << " min " << int(min) << " mip "
+                                                << int(mip) << " wrap " << int(ws) << "," << int(wt) << " lane " << l << " uv " << u[l] << "," << v[l];
+                                    }
+                                }
+                            }
+        }
+        simd::use_generic_path(false);
+    }
 }

@@ -64,9 +64,8 @@ public:
     int level_height(int level) const { return levels_[size_t(level)].height; }
     // Texel (i, j) of a level, j counted from the bottom row, as floats in [0, 1].
     glm::vec4 texel(int level, int i, int j) const {
-        const Level& l = levels_[size_t(level)];
-        const Rgba8 t = l.texels[size_t(j) * size_t(l.width) + size_t(i)];
-        return glm::vec4(t.r, t.g, t.b, t.a) * (1.0f / 255.0f);
+        const uint32_t t = texels()[texel_index(levels_[size_t(level)], i, j)];
+        return glm::vec4(float(t & 255u), float((t >> 8) & 255u), float((t >> 16) & 255u), float(t >> 24)) * (1.0f / 255.0f);
     }
     glm::vec4 texel(int i, int j) const { return texel(0, i, j); }
 
@@ -84,13 +83,31 @@ public:
     LevelChoice select_lod(const UvDerivatives& d, const Sampler& s) const;
 
 private:
+    // Each level is stored in tiles of 4x4 texels (64 bytes, one cache line: a bilinear
+    // footprint mostly falls in one), the tiles row by row, the texel rows in a tile bottom
+    // first; a level's sides are padded to multiples of 4. All levels share one array.
     struct Level {
         int width, height;
-        std::vector<Rgba8> texels;  // bottom row first
+        int tiles_x;  // tiles per row
+        int offset;   // of the level's first texel in the array
     };
+    static size_t texel_index(const Level& l, int i, int j) {
+        return size_t(l.offset) + size_t(((j >> 2) * l.tiles_x + (i >> 2)) * 16 + (j & 3) * 4 + (i & 3));
+    }
+    const uint32_t* texels() const { return storage_.data() + aligned_; }
     std::vector<Level> levels_;
+    std::vector<uint32_t> storage_;  // RGBA8 texels, r in the low byte
+    size_t aligned_ = 0;              // index of the first texel: at a 64-byte boundary
+    // The first 16 levels' numbers as lane tables (sample8 picks a level per lane with a
+    // permute); entries past the last level repeat it.
+    struct LevelTables {
+        std::array<int32_t, 16> width, height, tiles_x, offset;
+    } tables_{};
     template <Filter F>
     glm::vec4 sample_level(int level, glm::vec2 uv, const Sampler& s) const;
+    template <bool Wide>
+    void sample_lanes(const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d, const Sampler& s,
+                      std::array<simd::f8, 4>& rgba) const;
 };
 
 namespace detail {
