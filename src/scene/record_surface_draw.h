@@ -35,7 +35,7 @@ void record_surface_draw(Context& ctx, const SceneRenderer::Draw& d) {
     }
 }
 
-#define SOFTRASTER_SURFACE_MODELS(X) X(Unlit) X(Flat) X(Gouraud) X(Lambert) X(BlinnPhong) X(Normals) X(Depth)
+#define SOFTRASTER_SURFACE_MODELS(X) X(Unlit) X(Flat) X(Gouraud) X(Lambert) X(BlinnPhong) X(Phong) X(Normals) X(Depth)
 #define SOFTRASTER_DECLARE_SURFACE_DRAW(M) \
     extern template void record_surface_draw<Shading::M>(Context&, const SceneRenderer::Draw&);
 SOFTRASTER_SURFACE_MODELS(SOFTRASTER_DECLARE_SURFACE_DRAW)

@@ -233,8 +233,16 @@ struct Loader {
     }
 
     void read_lights(const Node& n, Lights& l) {
-        n.expect_object({"ambient", "directional"});
+        n.expect_object({"ambient", "directional"}, {"point", "spot"}, version);
         if (n.has("ambient")) l.ambient = n["ambient"].vec3();
+        for (const char* kind : {"point", "spot"}) {
+            if (!n.has(kind)) continue;
+            const Node list = n[kind];
+            const size_t count = list.array_size();
+            if (l.punctual.size() + count > Lights::kMaxPunctual)
+                list.fail("at most " + std::to_string(Lights::kMaxPunctual) + " point and spot lights together");
+            for (size_t i = 0; i < count; ++i) l.punctual.push_back(read_punctual(list.at(i), kind[0] == 's'));
+        }
         if (!n.has("directional")) return;
         const Node list = n["directional"];
         const size_t count = list.array_size();
@@ -247,6 +255,26 @@ struct Loader {
             light.color = d["color"].vec3();  // no default in the spec: required
             l.directional.push_back(light);
         }
+    }
+
+    // A point or spot light (docs/scene-format.md "Lights").
+    PunctualLight read_punctual(const Node& d, bool spot) {
+        if (spot) d.expect_object({"position", "direction", "color", "intensity", "range", "inner_angle", "outer_angle"});
+        else d.expect_object({"position", "color", "intensity", "range"});
+        PunctualLight light;
+        light.spot = spot;
+        light.position = d["position"].vec3();
+        if (d.has("color")) light.color = d["color"].vec3();
+        if (d.has("intensity")) light.intensity = float(d["intensity"].number_in(0, 1e30, false, false, "0 to 1e30"));
+        if (d.has("range")) light.range = float(d["range"].number_in(0, 1e30, true, false, "> 0, at most 1e30"));
+        if (spot) {
+            light.direction = nonzero_vec3(d["direction"]);
+            if (d.has("outer_angle")) light.outer_angle = float(d["outer_angle"].number_in(0, 90, true, false, "in (0, 90]"));
+            if (d.has("inner_angle")) light.inner_angle = float(d["inner_angle"].number_in(0, 90, false, false, "in [0, 90]"));
+            if (!(light.inner_angle < light.outer_angle))
+                (d.has("inner_angle") ? d["inner_angle"] : d["outer_angle"]).fail("inner_angle must be less than outer_angle");
+        }
+        return light;
     }
 
     std::shared_ptr<const Mesh> read_builtin(const Node& n) {
@@ -353,8 +381,9 @@ struct Loader {
         if (n.has("shading"))
             m.shading = n["shading"].choice<Shading>({{"unlit", Shading::Unlit}, {"flat", Shading::Flat},
                                                       {"gouraud", Shading::Gouraud}, {"lambert", Shading::Lambert},
-                                                      {"blinn_phong", Shading::BlinnPhong}, {"normals", Shading::Normals},
-                                                      {"depth", Shading::Depth}});
+                                                      {"blinn_phong", Shading::BlinnPhong}, {"phong", Shading::Phong},
+                                                      {"normals", Shading::Normals}, {"depth", Shading::Depth}});
+        if (n.has("shading")) need_v2(n["shading"], m.shading == Shading::Phong);
         if (n.has("color")) m.color = n["color"].vec4();
         read_sampler(n, m.sampler);
         if (n.has("specular")) m.specular = n["specular"].vec3();

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "scene/record_surface_draw.h"
 #include "softraster/context.h"
@@ -56,8 +57,27 @@ float view_depth_of_bounds_center(const Mesh& mesh, const std::vector<uint32_t>&
     return (model_view * glm::vec4(0.5f * (lo + hi), 1.0f)).z;
 }
 
-LightSet light_set(const Lights& lights) {
+// A point or spot light's numbers for the shaders (lighting.h positional_light).
+PositionalLight positional_light(const PunctualLight& l) {
+    PositionalLight p;
+    p.position = l.position;
+    p.color = l.color * l.intensity;
+    p.inv_range2 = l.range > 0.0f ? float(1.0 / (double(l.range) * double(l.range))) : 0.0f;
+    p.spot = l.spot;
+    if (l.spot) {
+        p.spot_direction = glm::vec3(glm::normalize(glm::dvec3(l.direction)));
+        const double cos_outer = std::cos(glm::radians(double(l.outer_angle))), cos_inner = std::cos(glm::radians(double(l.inner_angle)));
+        const double scale = 1.0 / std::max(1e-3, cos_inner - cos_outer);
+        p.cone_scale = float(scale);
+        p.cone_offset = float(-cos_outer * scale);
+    }
+    return p;
+}
+
+LightSet light_set(const Lights& lights, const std::vector<PositionalLight>& positional) {
     LightSet set;
+    set.positional = positional.data();
+    set.positional_count = int(positional.size());
     set.ambient = lights.ambient;
     for (const DirectionalLight& l : lights.directional) {
         if (set.count == LightSet::kMax) break;
@@ -134,6 +154,7 @@ void draw_object(Context& ctx, const SceneRenderer::Draw& d) {
         case Shading::Gouraud: record_surface_draw<Shading::Gouraud>(ctx, d); break;
         case Shading::Lambert: record_surface_draw<Shading::Lambert>(ctx, d); break;
         case Shading::BlinnPhong: record_surface_draw<Shading::BlinnPhong>(ctx, d); break;
+        case Shading::Phong: record_surface_draw<Shading::Phong>(ctx, d); break;
         case Shading::Normals: record_surface_draw<Shading::Normals>(ctx, d); break;
         case Shading::Depth: record_surface_draw<Shading::Depth>(ctx, d); break;
     }
@@ -145,7 +166,8 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     : scene_(scene), pool_(threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr) {
     const glm::mat4 view = view_matrix(scene.camera);
     const glm::mat4 proj = projection_matrix(scene.camera, scene.width, scene.height);
-    const LightSet lights = light_set(scene.lights);
+    for (const PunctualLight& l : scene.lights.punctual) positional_lights_.push_back(positional_light(l));
+    const LightSet lights = light_set(scene.lights, positional_lights_);
 
     struct Keyed {
         Draw draw;
@@ -175,6 +197,13 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
             d.flat_mesh = world_face_normal_mesh(*o.mesh, o.model);
             d.mesh = d.flat_mesh.get();
             u.normal_matrix = glm::mat3(1.0f);
+        }
+        // Point and spot lights need the surface position P, which the lambert and flat
+        // shaders do not interpolate: blinn_phong's does, and without its specular term it
+        // computes exactly their formula.
+        if (lights.positional_count && (d.shading == Shading::Lambert || d.shading == Shading::Flat)) {
+            d.shading = Shading::BlinnPhong;
+            u.has_specular = false;
         }
         const bool is_blended = o.material.blend != BlendMode::Opaque;
         d.state = render_state(o, scene.supersample);

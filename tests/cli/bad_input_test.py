@@ -164,6 +164,28 @@ expect_bad('border_color out of range', v2('v2border.json', {"material": {"borde
 expect_bad('trilinear in v1', v1_with('v1tri.json', {"material": {"filter": "trilinear"}}), ['objects[0].material.filter', 'version 2'])
 expect_bad('mirror in v1', v1_with('v1mirror.json', {"material": {"wrap": "mirror"}}), ['objects[0].material.wrap', 'version 2'])
 expect_bad('min_filter in v1', v1_with('v1minf.json', {"material": {"min_filter": "linear"}}), ['objects[0].material.min_filter', 'version 2'])
+
+
+def with_lights(name, lights, version=2):
+    s = json.loads(json.dumps(BASE))
+    s['version'] = version
+    s['lights'] = lights
+    return write(name, json.dumps(s))
+
+
+expect_bad('point light in v1', with_lights('v1point.json', {"point": [{"position": [0, 1, 0]}]}, version=1), ['lights.point', 'version 2 key'])
+expect_bad('point light without position', with_lights('pl0.json', {"point": [{"color": [1, 1, 1]}]}), ['lights.point[0].position', 'missing'])
+expect_bad('negative range', with_lights('plr.json', {"point": [{"position": [0, 1, 0], "range": -2}]}), ['lights.point[0].range', 'out of range'])
+expect_bad('zero range', with_lights('plr0.json', {"point": [{"position": [0, 1, 0], "range": 0}]}), ['lights.point[0].range', 'out of range'])
+expect_bad('negative intensity', with_lights('pli.json', {"point": [{"position": [0, 1, 0], "intensity": -1}]}), ['lights.point[0].intensity', 'out of range'])
+expect_bad('cone key on a point light', with_lights('plc.json', {"point": [{"position": [0, 1, 0], "outer_angle": 30}]}), ['lights.point[0].outer_angle', 'unknown key'])
+expect_bad('spot without direction', with_lights('sp0.json', {"spot": [{"position": [0, 1, 0]}]}), ['lights.spot[0].direction', 'missing'])
+expect_bad('spot inner not below outer', with_lights('spio.json', {"spot": [{"position": [0, 1, 0], "direction": [0, -1, 0], "inner_angle": 40, "outer_angle": 30}]}),
+           ['lights.spot[0].inner_angle', 'less than outer_angle'])
+expect_bad('spot outer over 90', with_lights('spo.json', {"spot": [{"position": [0, 1, 0], "direction": [0, -1, 0], "outer_angle": 120}]}), ['lights.spot[0].outer_angle', 'out of range'])
+expect_bad('spot zero direction', with_lights('spd.json', {"spot": [{"position": [0, 1, 0], "direction": [0, 0, 0]}]}), ['lights.spot[0].direction'])
+expect_bad('too many lights', with_lights('pl257.json', {"point": [{"position": [0, 1, 0]}] * 257}), ['lights.point', 'at most 256'])
+expect_bad('phong in v1', v1_with('v1phong.json', {"material": {"shading": "phong"}}), ['objects[0].material.shading', 'version 2'])
 expect_bad('v2 key in v1 (primitive)', v1_with('v1prim.json', {"primitive": "lines"}), ['objects[0].primitive', 'version 2'])
 expect_bad('unknown primitive', v2('v2prim.json', {"primitive": "quads"}), ['objects[0].primitive', "unknown value 'quads'"])
 expect_bad('line_width 0.5', v2('v2lw.json', {"line_width": 0.5}), ['objects[0].line_width', 'out of range'])

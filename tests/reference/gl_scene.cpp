@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace glref {
 namespace {
@@ -35,6 +36,22 @@ INTERP out vec3 v_normal;
 INTERP out vec2 v_uv;
 INTERP out vec4 v_color;
 INTERP out vec3 v_intensity;
+#if POSITIONAL > 0
+uniform vec3 u_pl_position[POSITIONAL];
+uniform vec3 u_pl_color[POSITIONAL];       // color times intensity
+uniform float u_pl_inv_range2[POSITIONAL]; // 1 / range^2, 0 without a range
+uniform vec3 u_pl_spot_dir[POSITIONAL];
+uniform vec2 u_pl_cone[POSITIONAL];        // spot: 1 / (cos inner - cos outer), -cos outer * that; point: 0, 1
+vec3 positional_light(int i, vec3 p, out vec3 l) {
+    vec3 lv = u_pl_position[i] - p;
+    float d2 = max(dot(lv, lv), 1e-8);
+    l = lv / sqrt(d2);
+    float t = d2 * u_pl_inv_range2[i];
+    float k = clamp(1.0 - t * t, 0.0, 1.0) / d2;
+    float a = clamp(dot(-l, u_pl_spot_dir[i]) * u_pl_cone[i].x + u_pl_cone[i].y, 0.0, 1.0);
+    return u_pl_color[i] * (k * a * a);
+}
+#endif
 void main() {
     v_world = (u_model * vec4(a_pos, 1.0)).xyz;
     v_normal = u_normal_matrix * a_normal;
@@ -44,6 +61,13 @@ void main() {
 #if SHADING == 2
     vec3 n = normalize(v_normal);
     for (int i = 0; i < LIGHTS; ++i) v_intensity += u_light_color[i] * max(0.0, dot(n, u_to_light[i]));
+#if POSITIONAL > 0
+    for (int i = 0; i < POSITIONAL; ++i) {
+        vec3 l;
+        vec3 c = positional_light(i, v_world, l);
+        v_intensity += c * max(0.0, dot(n, l));
+    }
+#endif
 #endif
     vec4 clip = u_mvp * vec4(a_pos, 1.0);
     // Flip y: GL window row 0 (the first row in memory) becomes the top row of the picture,
@@ -58,7 +82,7 @@ INTERP in vec3 v_normal;
 INTERP in vec2 v_uv;
 INTERP in vec4 v_color;
 INTERP in vec3 v_intensity;
-// SHADING: 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth
+// SHADING: 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth, 7 phong
 uniform sampler2D u_texture;
 uniform vec4 u_color;
 uniform vec3 u_specular;
@@ -69,6 +93,31 @@ uniform vec3 u_to_light[8];
 uniform vec3 u_light_color[8];
 uniform float u_alpha_cutoff;
 out vec4 frag;
+#if POSITIONAL > 0
+uniform vec3 u_pl_position[POSITIONAL];
+uniform vec3 u_pl_color[POSITIONAL];       // color times intensity
+uniform float u_pl_inv_range2[POSITIONAL]; // 1 / range^2, 0 without a range
+uniform vec3 u_pl_spot_dir[POSITIONAL];
+uniform vec2 u_pl_cone[POSITIONAL];        // spot: 1 / (cos inner - cos outer), -cos outer * that; point: 0, 1
+vec3 positional_light(int i, vec3 p, out vec3 l) {
+    vec3 lv = u_pl_position[i] - p;
+    float d2 = max(dot(lv, lv), 1e-8);
+    l = lv / sqrt(d2);
+    float t = d2 * u_pl_inv_range2[i];
+    float k = clamp(1.0 - t * t, 0.0, 1.0) / d2;
+    float a = clamp(dot(-l, u_pl_spot_dir[i]) * u_pl_cone[i].x + u_pl_cone[i].y, 0.0, 1.0);
+    return u_pl_color[i] * (k * a * a);
+}
+#endif
+// SHADING 4: N . H (Blinn-Phong); 7: R . V (Phong)
+float specular_factor(vec3 n, vec3 l, vec3 v) {
+#if SHADING == 7
+    float x = max(0.0, dot(reflect(-l, n), v));
+#else
+    float x = max(0.0, dot(n, normalize(l + v)));
+#endif
+    return u_shininess == 0.0 ? 1.0 : pow(x, u_shininess);
+}
 void main() {
 #if SHADING == 6
     frag = vec4(vec3(gl_FragCoord.z), 1.0);
@@ -87,20 +136,25 @@ void main() {
     vec3 n = normalize(v_normal);
     vec3 intensity = u_ambient;
     vec3 spec = vec3(0.0);
-#if SHADING == 4
     vec3 v = normalize(u_eye - v_world);
-#endif
     for (int i = 0; i < LIGHTS; ++i) {
         float nl = dot(n, u_to_light[i]);
         intensity += u_light_color[i] * max(0.0, nl);
-#if SHADING == 4
-        if (nl > 0.0) {
-            vec3 h = normalize(u_to_light[i] + v);
-            float nh = max(0.0, dot(n, h));
-            spec += u_light_color[i] * u_specular * (u_shininess == 0.0 ? 1.0 : pow(nh, u_shininess));
-        }
+#if SHADING == 4 || SHADING == 7
+        if (nl > 0.0) spec += u_light_color[i] * u_specular * specular_factor(n, u_to_light[i], v);
 #endif
     }
+#if POSITIONAL > 0
+    for (int i = 0; i < POSITIONAL; ++i) {
+        vec3 l;
+        vec3 c = positional_light(i, v_world, l);
+        float nl = dot(n, l);
+        intensity += c * max(0.0, nl);
+#if SHADING == 4 || SHADING == 7
+        if (nl > 0.0) spec += c * u_specular * specular_factor(n, l, v);
+#endif
+    }
+#endif
     frag = vec4(base.rgb * intensity + spec, base.a);
 #endif
 #endif
@@ -145,9 +199,10 @@ softraster::Mesh flat_mesh(const softraster::Mesh& m, const glm::mat4& model) {
     return out;
 }
 
-GLuint link_program(int shading, bool textured, int lights, bool cutoff, bool affine) {
+GLuint link_program(int shading, bool textured, int lights, int positional, bool cutoff, bool affine) {
     const std::string defines = "#define SHADING " + std::to_string(shading) + "\n#define TEXTURED " +
                                 std::to_string(int(textured)) + "\n#define LIGHTS " + std::to_string(lights) +
+                                "\n#define POSITIONAL " + std::to_string(positional) +
                                 "\n#define CUTOFF " + std::to_string(int(cutoff)) + "\n#define INTERP " +
                                 (affine ? "noperspective" : "") + "\n";
     const GLuint program = glCreateProgram();
@@ -248,7 +303,7 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
     auto program = [&](int shading, bool textured, int lights, bool cutoff, bool affine) {
         const int key = ((shading * 2 + int(textured)) * 2 + int(cutoff)) * 2 + int(affine);
         GLuint& p = programs_[key];
-        if (!p) p = link_program(shading, textured, lights, cutoff, affine);
+        if (!p) p = link_program(shading, textured, lights, int(scene.lights.punctual.size()), cutoff, affine);
         return p;
     };
     for (const softraster::SceneObject& o : scene.objects) {
@@ -356,6 +411,17 @@ void GlScene::draw_frame() const {
             const glm::vec3 l = -glm::normalize(lights.directional[i].direction);
             glUniform3fv(loc(("u_to_light[" + std::to_string(i) + "]").c_str()), 1, glm::value_ptr(l));
             glUniform3fv(loc(("u_light_color[" + std::to_string(i) + "]").c_str()), 1, glm::value_ptr(lights.directional[i].color));
+        }
+        for (size_t i = 0; i < lights.punctual.size(); ++i) {
+            const softraster::PunctualLight& l = lights.punctual[i];
+            auto at = [&](const char* name) { return loc((std::string(name) + "[" + std::to_string(i) + "]").c_str()); };
+            glUniform3fv(at("u_pl_position"), 1, glm::value_ptr(l.position));
+            glUniform3fv(at("u_pl_color"), 1, glm::value_ptr(l.color * l.intensity));
+            glUniform1f(at("u_pl_inv_range2"), l.range > 0.0f ? 1.0f / (l.range * l.range) : 0.0f);
+            glUniform3fv(at("u_pl_spot_dir"), 1, glm::value_ptr(glm::normalize(l.direction)));
+            const float cos_outer = std::cos(glm::radians(l.outer_angle)), cos_inner = std::cos(glm::radians(l.inner_angle));
+            const float scale = 1.0f / std::max(1e-3f, cos_inner - cos_outer);
+            glUniform2f(at("u_pl_cone"), l.spot ? scale : 0.0f, l.spot ? -cos_outer * scale : 1.0f);
         }
         glUniform3fv(loc("u_eye"), 1, glm::value_ptr(scene_.camera.eye));
         glUniform1i(loc("u_texture"), 0);

@@ -79,7 +79,7 @@ TEST(SceneJson, ErrorsNameThePathAndTheProblem) {
         {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"builtin\": {\"type\": \"cube\"}, \"materal\": {}}"), "objects[0].materal: unknown key"},
         {with("{\"type\": \"cube\"}", "{\"type\": \"cube\", \"size\": -1}"), "objects[0].builtin.size: value -1 out of range"},
         {with("{\"type\": \"cube\"}", "{\"type\": \"cone\"}"), "objects[0].builtin.type: unknown builtin"},
-        {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"builtin\": {\"type\": \"cube\"}, \"material\": {\"shading\": \"phong\"}}"), "objects[0].material.shading: unknown value 'phong'"},
+        {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"builtin\": {\"type\": \"cube\"}, \"material\": {\"shading\": \"toon\"}}"), "objects[0].material.shading: unknown value 'toon'"},
         {with("{\"builtin\": {\"type\": \"cube\"}}", "{\"builtin\": {\"type\": \"cube\"}, \"transform\": {\"scale\": [1, 0, 1]}}"), "objects[0].transform.scale: scale must not be zero"},
         {with("{\"builtin\": {\"type\": \"cube\"}}", "{}"), "objects[0]: exactly one of 'mesh' and 'builtin'"},
         {with("\"version\": 1", "\"version\": 3"), "version: value 3 out of range"},

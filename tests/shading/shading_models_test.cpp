@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <random>
+
+#include <glm/trigonometric.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -106,6 +109,74 @@ TEST(ShadingModels, BlinnPhong) {
     expect_vec4(shade<Shading::BlinnPhong>(u, v), glm::vec4(rgb, 0.5f));
 }
 
+// Phong: max(0, R.V)^shininess with R = 2 (N.L) N - L, here by hand for L tilted in x.
+TEST(ShadingModels, PhongReflectsTheLightAboutTheNormal) {
+    SurfaceUniforms u = uniforms();
+    u.lights.to_light[0] = glm::normalize(glm::vec3(1, 0, 2));
+    Inputs v = surface({0, 0, 1});
+    v.world = glm::vec3(2, 0, 1);  // V = normalize(eye - P) = normalize(-2, 0, 4): along R
+    const glm::vec3 L = u.lights.to_light[0], V = glm::normalize(glm::vec3(-2, 0, 4));
+    const glm::vec3 R(-L.x, 0, L.z);  // the mirror image of L about z
+    const float spec = std::pow(std::max(0.0f, glm::dot(R, V)), 10.0f);
+    EXPECT_NEAR(spec, 1.0f, 1e-5f);   // V lies along R: the highlight's center
+    const glm::vec3 rgb = glm::vec3(0.8f, 0.6f, 0.4f) * (glm::vec3(0.1f, 0.2f, 0.3f) + 0.5f * L.z) + glm::vec3(0.5f * 0.3f * spec);
+    expect_vec4(shade<Shading::Phong>(u, v), glm::vec4(rgb, 0.5f));
+    // Blinn-Phong's highlight at the same place is also 1 (H = N), off it Phong's falls faster.
+    v.world = glm::vec3(0, 0, 1);  // V = (0, 0, 1)
+    const float phong = std::pow(glm::dot(R, glm::vec3(0, 0, 1)), 10.0f);
+    const float blinn = std::pow(glm::normalize(L + glm::vec3(0, 0, 1)).z, 10.0f);
+    EXPECT_LT(phong, blinn);
+    EXPECT_NEAR(shade<Shading::Phong>(u, v).r - shade<Shading::BlinnPhong>(u, v).r, 0.15f * (phong - blinn), 1e-5f);
+}
+
+// A point light: inverse-square falloff, the range window and the spot cone, against
+// values worked out by hand (docs/scene-format.md "Point and spot lights").
+TEST(ShadingModels, PointAndSpotLightFalloff) {
+    PositionalLight point;
+    point.position = glm::vec3(0, 0, 2);
+    point.color = glm::vec3(4.0f);  // intensity 4 at distance 2: exactly 1
+    glm::vec3 l;
+    EXPECT_NEAR(positional_light(point, glm::vec3(0), l).x, 1.0f, 1e-6f);
+    EXPECT_NEAR(l.z, 1.0f, 1e-6f);
+    point.inv_range2 = 1.0f / 8.0f;  // range sqrt(8): (d^2 / range^2)^2 = 1/4, window 3/4
+    EXPECT_NEAR(positional_light(point, glm::vec3(0), l).x, 0.75f, 1e-6f);
+    point.inv_range2 = 1.0f / 3.0f;  // range below the distance: nothing
+    EXPECT_EQ(positional_light(point, glm::vec3(0), l).x, 0.0f);
+    // At the light itself: finite (d^2 is held at 1e-8).
+    EXPECT_TRUE(std::isfinite(positional_light(point, point.position, l).x));
+
+    PositionalLight spot = point;
+    spot.inv_range2 = 0.0f;
+    spot.spot = true;
+    spot.spot_direction = glm::vec3(0, 0, -1);
+    const float cos_inner = std::cos(glm::radians(10.0f)), cos_outer = std::cos(glm::radians(30.0f));
+    spot.cone_scale = 1.0f / (cos_inner - cos_outer);
+    spot.cone_offset = -cos_outer * spot.cone_scale;
+    EXPECT_NEAR(positional_light(spot, glm::vec3(0), l).x, 1.0f, 1e-5f);  // on the axis
+    const float off = std::tan(glm::radians(20.0f)) * 2.0f;             // 20 degrees off the axis
+    const float cd = std::cos(glm::radians(20.0f)), a = (cd - cos_outer) / (cos_inner - cos_outer);
+    const glm::vec3 p(off, 0, 0);
+    EXPECT_NEAR(positional_light(spot, p, l).x, 4.0f / (off * off + 4.0f) * a * a, 1e-5f);
+    EXPECT_EQ(positional_light(spot, glm::vec3(2.0f, 0, 0), l).x, 0.0f);  // 45 degrees: outside
+}
+
+// The lambert term of a point light seen at an angle, through the blinn_phong shader without
+// specular (as the scene renderer draws lambert surfaces lit by point lights).
+TEST(ShadingModels, PointLightOnASurface) {
+    SurfaceUniforms u = uniforms();
+    u.lights.count = 0;
+    u.has_specular = false;
+    PositionalLight light;
+    light.position = glm::vec3(1, 0, 1);
+    light.color = glm::vec3(2.0f);
+    u.lights.positional = &light;
+    u.lights.positional_count = 1;
+    Inputs v = surface({0, 0, 1});
+    v.world = glm::vec3(0, 0, 0);  // d^2 = 2, N.L = 1/sqrt(2)
+    const float i = 2.0f / 2.0f * (1.0f / std::sqrt(2.0f));
+    expect_vec4(shade<Shading::BlinnPhong>(u, v), glm::vec4(0.8f * (0.1f + i), 0.6f * (0.2f + i), 0.4f * (0.3f + i), 0.5f));
+}
+
 TEST(ShadingModels, BlinnPhongShininessZeroIsPowZeroZeroIsOne) {
     SurfaceUniforms u = uniforms();
     u.shininess = 0.0f;
@@ -185,6 +256,27 @@ TEST(ShadingModels, EightFragmentsAtOnceEqualOneAtATime) {
                 expect_batch_equals_scalar<Shading::Unlit, true, true>(u);
                 expect_batch_equals_scalar<Shading::BlinnPhong, true, false>(u);
             }
+    // Point and spot lights and Phong.
+    PositionalLight lights[2];
+    lights[0].position = glm::vec3(0.5f, 1.0f, 2.0f);
+    lights[0].color = glm::vec3(2.0f, 1.5f, 1.0f);
+    lights[0].inv_range2 = 0.2f;
+    lights[1].position = glm::vec3(-1.0f, 0.5f, 1.0f);
+    lights[1].color = glm::vec3(1.0f, 2.0f, 3.0f);
+    lights[1].spot = true;
+    lights[1].spot_direction = glm::normalize(glm::vec3(0.5f, -0.2f, -1.0f));
+    lights[1].cone_scale = 4.0f;
+    lights[1].cone_offset = -3.2f;
+    u.lights.positional = lights;
+    u.lights.positional_count = 2;
+    u.sampler = Sampler::plain(Filter::Bilinear, Wrap::Repeat);
+    expect_batch_equals_scalar<Shading::Phong, true, true>(u);
+    expect_batch_equals_scalar<Shading::Phong, false, false>(u);
+    expect_batch_equals_scalar<Shading::BlinnPhong, false, true>(u);
+    u.has_specular = false;
+    expect_batch_equals_scalar<Shading::BlinnPhong, true, false>(u);
+    u.has_specular = true;
+    u.lights.positional_count = 0;
     u.shininess = 7.5f;  // not a whole number: powf per lane
     expect_batch_equals_scalar<Shading::BlinnPhong, false, true>(u);
     u.shininess = 16.0f;

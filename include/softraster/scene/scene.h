@@ -18,7 +18,7 @@
 
 namespace softraster {
 
-enum class Shading { Unlit, Flat, Gouraud, Lambert, BlinnPhong, Normals, Depth };
+enum class Shading { Unlit, Flat, Gouraud, Lambert, BlinnPhong, Normals, Depth, Phong };
 
 struct Material {
     Shading shading = Shading::Lambert;
@@ -58,10 +58,24 @@ struct DirectionalLight {
     glm::vec3 color{1.0f};
 };
 
+// A point or spot light (version 2; glTF's KHR_lights_punctual).
+struct PunctualLight {
+    bool spot = false;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0, 0, -1};  // spot: the way the light travels
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    float range = 0.0f;             // 0: no range (the falloff never ends)
+    float inner_angle = 0.0f;       // spot: degrees from the axis, inner < outer <= 90
+    float outer_angle = 45.0f;
+};
+
 struct Lights {
     static constexpr size_t kMaxDirectional = 8;
+    static constexpr size_t kMaxPunctual = 256;
     glm::vec3 ambient{0.0f};
     std::vector<DirectionalLight> directional;
+    std::vector<PunctualLight> punctual;  // point and spot lights
 };
 
 struct Camera {

@@ -61,6 +61,7 @@ public:
 
 private:
     const Scene& scene_;
+    std::vector<PositionalLight> positional_lights_;  // the draws' LightSets point here
     std::vector<Draw> draws_;  // in draw order
     std::unique_ptr<WorkerPool> pool_;
     mutable std::unique_ptr<Context> ctx_;  // the recorded frame

@@ -30,9 +30,10 @@ using MaybeVarying = std::conditional_t<Present, T, NoVarying<Tag>>;
 
 template <Shading M, bool Textured, bool Colored>
 struct SurfaceVaryings {
-    static constexpr bool kLit = M == Shading::Flat || M == Shading::Lambert || M == Shading::BlinnPhong;
+    static constexpr bool kSpecular = M == Shading::BlinnPhong || M == Shading::Phong;
+    static constexpr bool kLit = M == Shading::Flat || M == Shading::Lambert || kSpecular;
     static constexpr bool kBase = M != Shading::Normals && M != Shading::Depth;  // reads color and texture
-    static constexpr bool kWorld = M == Shading::BlinnPhong;
+    static constexpr bool kWorld = kSpecular;
     static constexpr bool kNormal = kLit || M == Shading::Normals;
     static constexpr bool kIntensity = M == Shading::Gouraud;
     static constexpr bool kUv = kBase && Textured;
@@ -69,12 +70,21 @@ struct SurfaceShader {
     static constexpr int kDerivativeOf = Varyings::kUv ? Varyings::kUvAt : -1;
     static constexpr int kDerivativeAt = Varyings::kUvDerivativesAt;
     static constexpr uint64_t kFlat = Varyings::kUv ? varying_bits(sizeof(float) * kDerivativeAt, sizeof(glm::vec4)) : 0;
+    static constexpr Specular kSpecularModel = Model == Shading::Phong ? Specular::Phong : Specular::BlinnPhong;
     const SurfaceUniforms* u;
 
     glm::vec4 vertex(const MeshVertex& in, Varyings& out) const {
         if constexpr (Varyings::kWorld) out.world = glm::vec3(u->model * glm::vec4(in.position, 1.0f));
         if constexpr (Varyings::kNormal) out.normal = u->normal_matrix * in.normal;
-        if constexpr (Varyings::kIntensity) out.intensity = diffuse_intensity(u->lights, glm::normalize(u->normal_matrix * in.normal));
+        if constexpr (Varyings::kIntensity) {
+            const glm::vec3 n = glm::normalize(u->normal_matrix * in.normal);
+            out.intensity = diffuse_intensity(u->lights, n);
+            if (u->lights.positional_count) {
+                glm::vec3 unused(0.0f);
+                positional_terms<false>(u->lights, n, glm::vec3(u->model * glm::vec4(in.position, 1.0f)), glm::vec3(0.0f), glm::vec3(0.0f), 0.0f,
+                                        out.intensity, unused);
+            }
+        }
         if constexpr (Varyings::kUv) out.uv = in.uv;
         if constexpr (Varyings::kColor) out.color = in.color;
         return u->mvp * glm::vec4(in.position, 1.0f);
@@ -96,12 +106,20 @@ struct SurfaceShader {
                 out = base;
             } else if constexpr (Model == Shading::Gouraud) {
                 out = glm::vec4(glm::vec3(base) * in.intensity, base.a);
-            } else {  // Lambert, Flat (N is the face normal), BlinnPhong
+            } else {  // Lambert, Flat (N is the face normal), BlinnPhong, Phong
                 const glm::vec3 n = glm::normalize(in.normal);
-                glm::vec3 rgb = glm::vec3(base) * diffuse_intensity(u->lights, n);
-                if constexpr (Model == Shading::BlinnPhong)
-                    if (u->has_specular)
-                        rgb += specular_term(u->lights, n, glm::normalize(u->eye - in.world), u->specular, u->shininess);
+                glm::vec3 diffuse = diffuse_intensity(u->lights, n), spec(0.0f);
+                if constexpr (Varyings::kSpecular) {
+                    if (u->has_specular || u->lights.positional_count) {
+                        const glm::vec3 v = glm::normalize(u->eye - in.world);
+                        if (u->has_specular) spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess);
+                        if (u->has_specular) positional_terms<true, kSpecularModel>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec);
+                        else positional_terms<false>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec);
+                    }
+                }
+                glm::vec3 rgb = glm::vec3(base) * diffuse;
+                if constexpr (Varyings::kSpecular)
+                    if (u->has_specular) rgb += spec;
                 out = glm::vec4(rgb, base.a);
             }
         }
@@ -134,18 +152,24 @@ struct SurfaceShader {
             } else if constexpr (Model == Shading::Gouraud) {
                 const vec3x8 i = vec3_at(Varyings::kIntensityAt);
                 out = {base[0] * i.x, base[1] * i.y, base[2] * i.z, base[3]};
-            } else {  // Lambert, Flat, BlinnPhong
+            } else {  // Lambert, Flat, BlinnPhong, Phong
                 const vec3x8 n = normalize(vec3_at(Varyings::kNormalAt));
-                const vec3x8 d = diffuse_intensity(u->lights, n);
-                out = {base[0] * d.x, base[1] * d.y, base[2] * d.z, base[3]};
-                if constexpr (Model == Shading::BlinnPhong) {
-                    if (u->has_specular) {
+                vec3x8 d = diffuse_intensity(u->lights, n), spec{splat(0.0f), splat(0.0f), splat(0.0f)};
+                if constexpr (Varyings::kSpecular) {
+                    if (u->has_specular || u->lights.positional_count) {
                         const vec3x8 p = vec3_at(Varyings::kWorldAt);
                         const vec3x8 v = normalize({u->eye.x - p.x, u->eye.y - p.y, u->eye.z - p.z});
-                        const vec3x8 s = specular_term(u->lights, n, v, u->specular, u->shininess);
-                        out[0] += s.x;
-                        out[1] += s.y;
-                        out[2] += s.z;
+                        if (u->has_specular) spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess);
+                        if (u->has_specular) positional_terms<true, kSpecularModel>(u->lights, n, p, v, u->specular, u->shininess, d, spec);
+                        else positional_terms<false>(u->lights, n, p, v, u->specular, u->shininess, d, spec);
+                    }
+                }
+                out = {base[0] * d.x, base[1] * d.y, base[2] * d.z, base[3]};
+                if constexpr (Varyings::kSpecular) {
+                    if (u->has_specular) {
+                        out[0] += spec.x;
+                        out[1] += spec.y;
+                        out[2] += spec.z;
                     }
                 }
             }
