@@ -57,7 +57,7 @@ const std::map<std::string, ModelView> kViews = {
     {"bottom", ModelView::Bottom}, {"iso", ModelView::Iso}};
 const std::map<std::string, Shading> kShadings = {
     {"unlit", Shading::Unlit}, {"flat", Shading::Flat}, {"gouraud", Shading::Gouraud}, {"lambert", Shading::Lambert},
-    {"blinn_phong", Shading::BlinnPhong}, {"phong", Shading::Phong}, {"normals", Shading::Normals}, {"depth", Shading::Depth}};
+    {"blinn_phong", Shading::BlinnPhong}, {"phong", Shading::Phong}, {"pbr", Shading::Pbr}, {"normals", Shading::Normals}, {"depth", Shading::Depth}};
 
 }  // namespace
 
@@ -71,7 +71,7 @@ void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size) {
         ->check(CLI::IsMember({1, 2, 4, 8, 16}))
         ->capture_default_str();
     cmd.add_option("--shading", opt.shading, "Shading for every material (default: lambert, or unlit where the file says)")
-        ->check(CLI::IsMember({"unlit", "flat", "gouraud", "lambert", "blinn_phong", "phong", "normals", "depth"}));
+        ->check(CLI::IsMember({"unlit", "flat", "gouraud", "lambert", "blinn_phong", "phong", "pbr", "normals", "depth"}));
     cmd.add_option("--camera", opt.camera, "Look through the file's camera N (0 is the first) instead of framing the model")
         ->check(CLI::Range(0, 1 << 20));
     cmd.add_flag("-v,--verbose", opt.verbose, "Also say what the file has that is not drawn");

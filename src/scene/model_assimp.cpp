@@ -138,6 +138,9 @@ public:
         place(*scene_.mRootNode, glm::mat4(1.0f));
         if (model_.objects.empty()) fail("nothing to draw (no triangles, lines or points)");
         for (unsigned i = 0; i < scene_.mNumCameras; ++i) read_camera(*scene_.mCameras[i]);
+        // Lights as glTF's KHR_lights_punctual defines them; other formats' lights have
+        // other falloffs and units (a default rig is used for them).
+        if (gltf()) for (unsigned i = 0; i < scene_.mNumLights; ++i) read_light(*scene_.mLights[i]);
         note_ignored();
         return std::move(model_);
     }
@@ -216,12 +219,56 @@ private:
             break;
         }
         if (m.GetTextureCount(aiTextureType_NORMALS) > 0) ignored_.insert("normal maps");
-        if (m.GetTextureCount(aiTextureType_METALNESS) > 0 || m.GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS) > 0)
-            ignored_.insert("metallic-roughness maps");
-        if (m.GetTextureCount(aiTextureType_LIGHTMAP) > 0 || m.GetTextureCount(aiTextureType_AMBIENT_OCCLUSION) > 0)
-            ignored_.insert("occlusion maps");
-        if (m.GetTextureCount(aiTextureType_EMISSIVE) > 0) ignored_.insert("emissive maps");
+        if (mat.shading != Shading::Unlit && m.Get(AI_MATKEY_GLTF_ALPHAMODE, alpha_mode) == AI_SUCCESS) read_pbr(m, use);
+        if (mat.shading != Shading::Pbr) {
+            if (m.GetTextureCount(aiTextureType_METALNESS) > 0 || m.GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS) > 0)
+                ignored_.insert("metallic-roughness maps");
+            if (m.GetTextureCount(aiTextureType_LIGHTMAP) > 0 || m.GetTextureCount(aiTextureType_AMBIENT_OCCLUSION) > 0)
+                ignored_.insert("occlusion maps");
+            if (m.GetTextureCount(aiTextureType_EMISSIVE) > 0) ignored_.insert("emissive maps");
+        }
         return use;
+    }
+
+    // A glTF material (assimp's glTF 2 reader is the one that writes an alpha mode) is drawn
+    // as the file describes it: metallic-roughness (docs/scene-format.md "Physically based
+    // materials") with its factors, emissive color and strength, and the maps that read the
+    // base color texture's coordinate set (ours has one per object).
+    void read_pbr(const aiMaterial& m, MaterialUse& use) {
+        Material& mat = use.material;
+        mat.shading = Shading::Pbr;
+        auto factor = [](float v, float def) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : def; };
+        float metallic = 1.0f, roughness = 1.0f;  // glTF's defaults
+        m.Get(AI_MATKEY_METALLIC_FACTOR, metallic);
+        m.Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness);
+        mat.metallic = factor(metallic, 1.0f), mat.roughness = factor(roughness, 1.0f);
+        aiColor3D emissive(0, 0, 0);
+        float strength = 1.0f;
+        m.Get(AI_MATKEY_COLOR_EMISSIVE, emissive);
+        m.Get(AI_MATKEY_EMISSIVE_INTENSITY, strength);  // KHR_materials_emissive_strength
+        const glm::vec3 e = glm::vec3(emissive.r, emissive.g, emissive.b) * strength;
+        mat.emissive = std::isfinite(e.x + e.y + e.z) ? glm::clamp(e, 0.0f, 1e30f) : glm::vec3(0.0f);
+        auto map = [&](aiTextureType type) -> std::shared_ptr<const Texture> {
+            aiString file;
+            if (m.GetTextureCount(type) == 0 || m.GetTexture(type, 0, &file) != AI_SUCCESS) return nullptr;
+            unsigned uv_set = 0;
+            m.Get(AI_MATKEY_UVWSRC(type, 0), uv_set);
+            if (uv_set != use.uv_set) {
+                ignored_.insert("maps on another texture coordinate set than the base color's");
+                return nullptr;
+            }
+            return texture(file.C_Str());
+        };
+        // (assimp's glTF 2 reader files the metallic-roughness texture as "unknown".)
+        for (aiTextureType type : {aiTextureType_UNKNOWN, aiTextureType_METALNESS, aiTextureType_DIFFUSE_ROUGHNESS})
+            if (!mat.metallic_roughness_texture) mat.metallic_roughness_texture = map(type);
+        mat.occlusion_texture = map(aiTextureType_LIGHTMAP);
+        if (mat.occlusion_texture) {
+            float strength_ao = 1.0f;
+            if (m.Get(AI_MATKEY_GLTF_TEXTURE_STRENGTH(aiTextureType_LIGHTMAP, 0), strength_ao) == AI_SUCCESS)
+                mat.occlusion_strength = factor(strength_ao, 1.0f);
+        }
+        mat.emissive_texture = map(aiTextureType_EMISSIVE);
     }
 
     // A texture by the name the material gives: "*N" or a name assimp knows as embedded, else
@@ -395,9 +442,52 @@ private:
         else ignored_.insert("a camera with unusable parameters");
     }
 
+    // A light of the file at its node (glTF's KHR_lights_punctual as assimp reads it: the
+    // color already times the intensity, cone angles in radians, the range not kept).
+    void read_light(const aiLight& l) {
+        const auto node = world_.find(l.mName.C_Str());
+        const glm::mat4 m = node != world_.end() ? node->second : glm::mat4(1.0f);
+        const glm::vec3 color(l.mColorDiffuse.r, l.mColorDiffuse.g, l.mColorDiffuse.b);
+        const glm::vec3 position(m * glm::vec4(l.mPosition.x, l.mPosition.y, l.mPosition.z, 1.0f));
+        const glm::vec3 direction(m * glm::vec4(l.mDirection.x, l.mDirection.y, l.mDirection.z, 0.0f));
+        const bool usable = finite(color) && color.x >= 0 && color.y >= 0 && color.z >= 0 && std::max({color.x, color.y, color.z}) < 1e30f &&
+                            finite(position) && finite(direction) &&
+                            (l.mType == aiLightSource_POINT || glm::length(direction) > 0.0f);  // (a point light has none)
+        const bool spot = l.mType == aiLightSource_SPOT;
+        if (!usable || (l.mType != aiLightSource_DIRECTIONAL && l.mType != aiLightSource_POINT && !spot)) {
+            ignored_.insert("a light of a kind or with values not drawn");
+            return;
+        }
+        if (l.mType == aiLightSource_DIRECTIONAL) {
+            if (model_.lights.directional.size() < Lights::kMaxDirectional) model_.lights.directional.push_back({direction, color});
+            else ignored_.insert("directional lights past the eighth");
+            return;
+        }
+        if (model_.lights.punctual.size() >= Lights::kMaxPunctual) {
+            ignored_.insert("point and spot lights past the 256th");
+            return;
+        }
+        PunctualLight p;
+        p.spot = spot;
+        p.position = position;
+        p.direction = direction;
+        p.color = color;
+        if (spot) {
+            const float outer = glm::degrees(l.mAngleOuterCone), inner = glm::degrees(l.mAngleInnerCone);
+            p.outer_angle = std::isfinite(outer) && outer > 0.0f ? std::min(outer, 90.0f) : 45.0f;
+            p.inner_angle = std::isfinite(inner) && inner >= 0.0f && inner < p.outer_angle ? inner : 0.0f;
+        }
+        model_.lights.punctual.push_back(p);
+    }
+
+    bool gltf() const {
+        const std::string ext = lower(path_.extension().string());
+        return ext == ".gltf" || ext == ".glb";
+    }
+
     void note_ignored() {
         if (scene_.mNumAnimations > 0) ignored_.insert("animations (drawn at rest)");
-        if (scene_.mNumLights > 0) ignored_.insert("the file's lights (a default rig is used)");
+        if (scene_.mNumLights > 0 && !gltf()) ignored_.insert("the file's lights (a default rig is used)");
         for (const std::string& what : ignored_) model_.ignored.push_back(what);
     }
 

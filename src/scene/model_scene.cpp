@@ -73,6 +73,11 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
     const glm::vec3 f = glm::normalize(cam.target - cam.eye);
     const glm::vec3 r = glm::normalize(glm::cross(f, cam.up));
     const glm::vec3 u = glm::cross(r, f);
+    if (!model.lights.directional.empty() || !model.lights.punctual.empty()) {
+        scene.lights = model.lights;
+        scene.lights.ambient = glm::vec3(0.1f);
+        return scene;
+    }
     scene.lights.ambient = glm::vec3(0.25f);
     scene.lights.directional = {
         {glm::normalize(f + 0.6f * r - 0.8f * u), glm::vec3(0.75f)},  // key: from the upper left

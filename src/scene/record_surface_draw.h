@@ -27,7 +27,9 @@ void record_surface_draw(Context& ctx, const SceneRenderer::Draw& d) {
     if constexpr (M == Shading::Normals || M == Shading::Depth) {
         draw.template operator()<false, false>();
     } else {
-        const bool textured = d.uniforms.texture != nullptr;
+        const SurfaceUniforms& u = d.uniforms;
+        const bool textured = u.texture != nullptr ||
+                              (M == Shading::Pbr && (u.metallic_roughness_texture || u.occlusion_texture || u.emissive_texture));
         if (textured && d.colored) draw.template operator()<true, true>();
         else if (textured) draw.template operator()<true, false>();
         else if (d.colored) draw.template operator()<false, true>();
@@ -35,7 +37,7 @@ void record_surface_draw(Context& ctx, const SceneRenderer::Draw& d) {
     }
 }
 
-#define SOFTRASTER_SURFACE_MODELS(X) X(Unlit) X(Flat) X(Gouraud) X(Lambert) X(BlinnPhong) X(Phong) X(Normals) X(Depth)
+#define SOFTRASTER_SURFACE_MODELS(X) X(Unlit) X(Flat) X(Gouraud) X(Lambert) X(BlinnPhong) X(Phong) X(Pbr) X(Normals) X(Depth)
 #define SOFTRASTER_DECLARE_SURFACE_DRAW(M) \
     extern template void record_surface_draw<Shading::M>(Context&, const SceneRenderer::Draw&);
 SOFTRASTER_SURFACE_MODELS(SOFTRASTER_DECLARE_SURFACE_DRAW)

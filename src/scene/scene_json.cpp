@@ -376,14 +376,15 @@ struct Loader {
     void read_material(const Node& n, Material& m) {
         n.expect_object({"shading", "color", "texture", "filter", "wrap", "specular", "shininess", "blend"},
                         {"color_mask", "alpha_cutoff", "alpha_to_coverage", "interpolation", "min_filter", "mag_filter",
-                         "border_color"},
+                         "border_color", "metallic", "roughness", "emissive", "occlusion_strength", "metallic_roughness_texture",
+                         "occlusion_texture", "emissive_texture"},
                         version);
         if (n.has("shading"))
             m.shading = n["shading"].choice<Shading>({{"unlit", Shading::Unlit}, {"flat", Shading::Flat},
                                                       {"gouraud", Shading::Gouraud}, {"lambert", Shading::Lambert},
-                                                      {"blinn_phong", Shading::BlinnPhong}, {"phong", Shading::Phong},
+                                                      {"blinn_phong", Shading::BlinnPhong}, {"phong", Shading::Phong}, {"pbr", Shading::Pbr},
                                                       {"normals", Shading::Normals}, {"depth", Shading::Depth}});
-        if (n.has("shading")) need_v2(n["shading"], m.shading == Shading::Phong);
+        if (n.has("shading")) need_v2(n["shading"], m.shading == Shading::Phong || m.shading == Shading::Pbr);
         if (n.has("color")) m.color = n["color"].vec4();
         read_sampler(n, m.sampler);
         if (n.has("specular")) m.specular = n["specular"].vec3();
@@ -412,6 +413,17 @@ struct Loader {
         if (n.has("interpolation"))
             m.affine = n["interpolation"].choice<bool>({{"perspective", false}, {"affine", true}});
         if (n.has("texture")) m.texture = read_texture(n["texture"]);
+        if (n.has("metallic")) m.metallic = float(n["metallic"].number_in(0, 1, false, false, "0..1"));
+        if (n.has("roughness")) m.roughness = float(n["roughness"].number_in(0, 1, false, false, "0..1"));
+        if (n.has("emissive")) {
+            m.emissive = n["emissive"].vec3();
+            if (!(m.emissive.x >= 0 && m.emissive.y >= 0 && m.emissive.z >= 0 && std::max({m.emissive.x, m.emissive.y, m.emissive.z}) <= 1e30f))
+                n["emissive"].fail("components must be in 0..1e30");
+        }
+        if (n.has("occlusion_strength")) m.occlusion_strength = float(n["occlusion_strength"].number_in(0, 1, false, false, "0..1"));
+        if (n.has("metallic_roughness_texture")) m.metallic_roughness_texture = read_texture(n["metallic_roughness_texture"]);
+        if (n.has("occlusion_texture")) m.occlusion_texture = read_texture(n["occlusion_texture"]);
+        if (n.has("emissive_texture")) m.emissive_texture = read_texture(n["emissive_texture"]);
     }
 
     void read_depth(const Node& n, ObjectState& st) {

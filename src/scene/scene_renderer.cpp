@@ -155,6 +155,7 @@ void draw_object(Context& ctx, const SceneRenderer::Draw& d) {
         case Shading::Lambert: record_surface_draw<Shading::Lambert>(ctx, d); break;
         case Shading::BlinnPhong: record_surface_draw<Shading::BlinnPhong>(ctx, d); break;
         case Shading::Phong: record_surface_draw<Shading::Phong>(ctx, d); break;
+        case Shading::Pbr: record_surface_draw<Shading::Pbr>(ctx, d); break;
         case Shading::Normals: record_surface_draw<Shading::Normals>(ctx, d); break;
         case Shading::Depth: record_surface_draw<Shading::Depth>(ctx, d); break;
     }
@@ -193,6 +194,13 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         u.shininess = o.material.shininess;
         u.texture = o.material.texture.get();
         u.sampler = o.material.sampler;
+        u.metallic = o.material.metallic;
+        u.roughness = o.material.roughness;
+        u.emissive = o.material.emissive;
+        u.occlusion_strength = o.material.occlusion_strength;
+        u.metallic_roughness_texture = o.material.metallic_roughness_texture.get();
+        u.occlusion_texture = o.material.occlusion_texture.get();
+        u.emissive_texture = o.material.emissive_texture.get();
         if (d.shading == Shading::Flat) {
             d.flat_mesh = world_face_normal_mesh(*o.mesh, o.model);
             d.mesh = d.flat_mesh.get();

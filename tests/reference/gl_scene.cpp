@@ -82,7 +82,7 @@ INTERP in vec3 v_normal;
 INTERP in vec2 v_uv;
 INTERP in vec4 v_color;
 INTERP in vec3 v_intensity;
-// SHADING: 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth, 7 phong
+// SHADING: 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth, 7 phong, 8 pbr
 uniform sampler2D u_texture;
 uniform vec4 u_color;
 uniform vec3 u_specular;
@@ -109,6 +109,29 @@ vec3 positional_light(int i, vec3 p, out vec3 l) {
     return u_pl_color[i] * (k * a * a);
 }
 #endif
+#if SHADING == 8
+// glTF 2.0 appendix B: Schlick's Fresnel, GGX, the height-correlated Smith visibility; a
+// light adds pi f c (N.L) (the pi: a light's color is what a white diffuse surface reflects).
+#define PI 3.14159265358979
+uniform float u_metallic;
+uniform float u_roughness;
+uniform float u_occlusion_strength;
+uniform vec3 u_emissive;
+uniform sampler2D u_mr_texture;
+uniform sampler2D u_occlusion_texture;
+uniform sampler2D u_emissive_texture;
+vec3 pbr_light(vec3 c_diff, vec3 f0, float a2, vec3 n, vec3 v, vec3 l, float nv) {
+    float nl = dot(n, l);
+    if (!(nl > 0.0)) return vec3(0.0);
+    vec3 h = normalize(l + v);
+    float nh = max(0.0, dot(n, h)), vh = max(0.0, dot(v, h));
+    vec3 F = f0 + (1.0 - f0) * pow(1.0 - vh, 5.0);
+    float dd = nh * nh * (a2 - 1.0) + 1.0;
+    float D = a2 / (PI * dd * dd);
+    float vis = 1.0 / ((nl + sqrt(a2 + (1.0 - a2) * nl * nl)) * (nv + sqrt(a2 + (1.0 - a2) * nv * nv)));
+    return ((1.0 - F) * c_diff / PI + F * (D * vis)) * (PI * nl);
+}
+#endif
 // SHADING 4: N . H (Blinn-Phong); 7: R . V (Phong)
 float specular_factor(vec3 n, vec3 l, vec3 v) {
 #if SHADING == 7
@@ -130,6 +153,34 @@ void main() {
 #endif
 #if SHADING == 0
     frag = base;
+#elif SHADING == 8
+    float metallic = u_metallic, roughness = u_roughness, occlusion = 1.0;
+    vec3 emissive = u_emissive;
+#if MR_MAP
+    vec4 mr = texture(u_mr_texture, v_uv);
+    roughness *= mr.g;
+    metallic *= mr.b;
+#endif
+#if OCCLUSION_MAP
+    occlusion = 1.0 + u_occlusion_strength * (texture(u_occlusion_texture, v_uv).r - 1.0);
+#endif
+#if EMISSIVE_MAP
+    emissive *= texture(u_emissive_texture, v_uv).rgb;
+#endif
+    float a = max(0.03, roughness) * max(0.03, roughness), a2 = a * a;
+    vec3 c_diff = base.rgb * (1.0 - metallic), f0 = mix(vec3(0.04), base.rgb, metallic);
+    vec3 n = normalize(v_normal), v = normalize(u_eye - v_world);
+    float nv = max(0.0, dot(n, v));
+    vec3 rgb = u_ambient * c_diff * occlusion;
+    for (int i = 0; i < LIGHTS; ++i) rgb += u_light_color[i] * pbr_light(c_diff, f0, a2, n, v, u_to_light[i], nv);
+#if POSITIONAL > 0
+    for (int i = 0; i < POSITIONAL; ++i) {
+        vec3 l;
+        vec3 c = positional_light(i, v_world, l);
+        rgb += c * pbr_light(c_diff, f0, a2, n, v, l, nv);
+    }
+#endif
+    frag = vec4(rgb + emissive, base.a);
 #elif SHADING == 2
     frag = vec4(base.rgb * v_intensity, base.a);
 #else
@@ -199,8 +250,8 @@ softraster::Mesh flat_mesh(const softraster::Mesh& m, const glm::mat4& model) {
     return out;
 }
 
-GLuint link_program(int shading, bool textured, int lights, int positional, bool cutoff, bool affine) {
-    const std::string defines = "#define SHADING " + std::to_string(shading) + "\n#define TEXTURED " +
+GLuint link_program(const std::string& maps, int shading, bool textured, int lights, int positional, bool cutoff, bool affine) {
+    const std::string defines = maps + "#define SHADING " + std::to_string(shading) + "\n#define TEXTURED " +
                                 std::to_string(int(textured)) + "\n#define LIGHTS " + std::to_string(lights) +
                                 "\n#define POSITIONAL " + std::to_string(positional) +
                                 "\n#define CUTOFF " + std::to_string(int(cutoff)) + "\n#define INTERP " +
@@ -248,6 +299,7 @@ struct GlScene::Draw {
     glm::vec4 color{1.0f};
     GLuint program = 0;
     GLuint vao = 0, vbo = 0, ibo = 0, texture = 0;
+    GLuint maps[3] = {0, 0, 0};  // pbr: metallic-roughness, occlusion, emissive (units 1 to 3)
     GLsizei index_count = 0;
     const softraster::SceneObject* object = nullptr;
     glm::mat4 mvp{1.0f}, model{1.0f};
@@ -300,11 +352,31 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
     const glm::mat4 view = softraster::view_matrix(scene.camera);
     const glm::mat4 proj = softraster::projection_matrix(scene.camera, scene.width, scene.height);
     std::map<const softraster::Texture*, GLuint> textures;
-    auto program = [&](int shading, bool textured, int lights, bool cutoff, bool affine) {
-        const int key = ((shading * 2 + int(textured)) * 2 + int(cutoff)) * 2 + int(affine);
+    auto program = [&](int shading, bool textured, int lights, bool cutoff, bool affine, const std::string& maps = "") {
+        const std::string key = maps + std::to_string(shading) + " " + std::to_string(int(textured)) + std::to_string(int(cutoff)) +
+                                std::to_string(int(affine));
         GLuint& p = programs_[key];
-        if (!p) p = link_program(shading, textured, lights, int(scene.lights.punctual.size()), cutoff, affine);
+        if (!p) p = link_program(maps, shading, textured, lights, int(scene.lights.punctual.size()), cutoff, affine);
         return p;
+    };
+    auto upload_texture = [&](const softraster::Texture* t) {
+        GLuint& tex = textures[t];
+        if (!tex) {
+            // Texel row 0 is the bottom of the picture: what GL calls t = 0.
+            std::vector<uint8_t> bytes(size_t(t->width()) * size_t(t->height()) * 4);
+            for (int j = 0; j < t->height(); ++j)
+                for (int i = 0; i < t->width(); ++i) {
+                    const glm::vec4 c = t->texel(i, j);
+                    for (int k = 0; k < 4; ++k)
+                        bytes[(size_t(j) * size_t(t->width()) + size_t(i)) * 4 + size_t(k)] = uint8_t(std::lround(c[k] * 255.0f));
+                }
+            glGenTextures(1, &tex);
+            glBindTexture(GL_TEXTURE_2D, tex);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t->width(), t->height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+            glGenerateMipmap(GL_TEXTURE_2D);  // GL's own chain, not softraster's
+        }
+        return tex;
     };
     for (const softraster::SceneObject& o : scene.objects) {
         auto d = std::make_unique<Draw>();
@@ -314,7 +386,15 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
         d->mode = o.primitive == softraster::Topology::Triangles ? GL_TRIANGLES : o.primitive == softraster::Topology::Lines ? GL_LINES : GL_POINTS;
         d->color = o.material.color;
         const bool cutoff = o.material.alpha_cutoff.has_value();
-        d->program = program(shading, o.material.texture != nullptr, int(scene.lights.directional.size()), cutoff, o.material.affine);
+        const softraster::Material& mat = o.material;
+        const bool pbr = shading == int(Shading::Pbr);
+        const softraster::Texture* maps[3] = {pbr ? mat.metallic_roughness_texture.get() : nullptr, pbr ? mat.occlusion_texture.get() : nullptr,
+                                              pbr ? mat.emissive_texture.get() : nullptr};
+        const std::string map_defines = std::string("#define MR_MAP ") + (maps[0] ? "1" : "0") + "\n#define OCCLUSION_MAP " +
+                                        (maps[1] ? "1" : "0") + "\n#define EMISSIVE_MAP " + (maps[2] ? "1" : "0") + "\n";
+        for (int k = 0; k < 3; ++k)
+            if (maps[k]) d->maps[k] = upload_texture(maps[k]);
+        d->program = program(shading, mat.texture != nullptr, int(scene.lights.directional.size()), cutoff, mat.affine, map_defines);
         d->model = o.model;
         d->mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
         d->normal_matrix = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(o.model)))));
@@ -337,25 +417,7 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
         upload(*d, *mesh, indices, o.primitive == softraster::Topology::Triangles ? 3 : o.primitive == softraster::Topology::Lines ? 2 : 1,
                /*vertex_colors=*/true);
 
-        if (const softraster::Texture* t = o.material.texture.get()) {
-            GLuint& tex = textures[t];
-            if (!tex) {
-                // Texel row 0 is the bottom of the picture: what GL calls t = 0.
-                std::vector<uint8_t> bytes(size_t(t->width()) * size_t(t->height()) * 4);
-                for (int j = 0; j < t->height(); ++j)
-                    for (int i = 0; i < t->width(); ++i) {
-                        const glm::vec4 c = t->texel(i, j);
-                        for (int k = 0; k < 4; ++k)
-                            bytes[(size_t(j) * size_t(t->width()) + size_t(i)) * 4 + size_t(k)] = uint8_t(std::lround(c[k] * 255.0f));
-                    }
-                glGenTextures(1, &tex);
-                glBindTexture(GL_TEXTURE_2D, tex);
-                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t->width(), t->height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
-                glGenerateMipmap(GL_TEXTURE_2D);  // GL's own chain, not softraster's
-            }
-            d->texture = tex;
-        }
+        if (const softraster::Texture* t = o.material.texture.get()) d->texture = upload_texture(t);
         // A wireframe: the triangles pushed back by glPolygonOffset(+1, +1), then their edges
         // as lines in one color, without vertex colors, opaque.
         std::unique_ptr<Draw> wire;
@@ -433,8 +495,18 @@ void GlScene::draw_frame() const {
         glUniform4fv(loc("u_color"), 1, glm::value_ptr(d->color));
         glUniform3fv(loc("u_specular"), 1, glm::value_ptr(m.specular));
         glUniform1f(loc("u_shininess"), m.shininess);
-        if (d->texture && !d->wire) {
-            glBindTexture(GL_TEXTURE_2D, d->texture);
+        glUniform1f(loc("u_metallic"), m.metallic);
+        glUniform1f(loc("u_roughness"), m.roughness);
+        glUniform1f(loc("u_occlusion_strength"), m.occlusion_strength);
+        glUniform3fv(loc("u_emissive"), 1, glm::value_ptr(m.emissive));
+        glUniform1i(loc("u_mr_texture"), 1);
+        glUniform1i(loc("u_occlusion_texture"), 2);
+        glUniform1i(loc("u_emissive_texture"), 3);
+        for (int unit = 0; unit < 4; ++unit) {
+            const GLuint tex = unit == 0 ? d->texture : d->maps[unit - 1];
+            if (!tex || d->wire) continue;
+            glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+            glBindTexture(GL_TEXTURE_2D, tex);
             const softraster::Sampler& s = m.sampler;
             using softraster::Filter, softraster::MipFilter;
             auto wrap = [](softraster::Wrap w) -> GLint {
@@ -456,6 +528,7 @@ void GlScene::draw_frame() const {
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap(s.wrap_t));
             glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(s.border));
         }
+        glActiveTexture(GL_TEXTURE0);
         // The y flip in the vertex shader mirrors windings: front faces flip too.
         if (o.cull == softraster::CullMode::None) {
             glDisable(GL_CULL_FACE);

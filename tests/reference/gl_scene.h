@@ -25,7 +25,7 @@ public:
 
 private:
     const softraster::Scene& scene_;
-    std::map<int, GLuint> programs_;  // by shading model and texture
+    std::map<std::string, GLuint> programs_;  // by their #defines
     std::vector<std::unique_ptr<Draw>> draws_;
 };
 

@@ -256,7 +256,46 @@ def make_obj_mtl():
     write('models/materials.obj', '\n'.join(lines) + '\n')
 
 
+def make_pbr_lights():
+    """glTF metallic-roughness materials (factors, a metallic-roughness map, an occlusion map
+    and an emissive map) on a floor and two cubes, and
+    KHR_lights_punctual lights: a directional, a point with a range and a spot, placed by
+    nodes (the spot's node turned to point down)."""
+    g = Gltf()
+    mr = png(8, 8, [c for y in range(8) for x in range(8) for c in (0, 60 + 25 * x, 255 if y < 4 else 0)], 3)
+    ao = png(8, 8, [c for y in range(8) for x in range(8) for c in (255 if 1 <= x <= 6 and 1 <= y <= 6 else 90, 0, 0)], 3)
+    glow = png(8, 8, [c for y in range(8) for x in range(8) for c in ((255, 140, 20) if (x + y) % 5 == 0 else (0, 0, 0))], 3)
+    floor = g.material(pbrMetallicRoughness={"baseColorFactor": [0.7, 0.7, 0.75, 1], "metallicFactor": 0.0, "roughnessFactor": 0.6,
+                                             "metallicRoughnessTexture": {"index": g.texture(mr, 'uri')}},
+                       occlusionTexture={"index": g.texture(ao, 'uri'), "strength": 0.7})
+    gold = g.material(pbrMetallicRoughness={"baseColorFactor": [1.0, 0.78, 0.34, 1], "metallicFactor": 1.0, "roughnessFactor": 0.3})
+    lamp = g.material(pbrMetallicRoughness={"baseColorFactor": [0.2, 0.2, 0.2, 1], "metallicFactor": 0.0},
+                      emissiveFactor=[1, 0.9, 0.8], emissiveTexture={"index": g.texture(glow, 'uri')})
+    pos, nrm, uv, idx = cube()
+    cube_prim = {"POSITION": g.accessor(pos), "NORMAL": g.accessor(nrm), "TEXCOORD_0": g.accessor(uv)}
+    cube_idx = g.accessor(idx, 5123)
+    fp = [[-2, 0, 2], [2, 0, 2], [2, 0, -2], [-2, 0, -2]]
+    g.node(mesh=g.mesh([{"attributes": {"POSITION": g.accessor(fp), "NORMAL": g.accessor([[0, 1, 0]] * 4),
+                                        "TEXCOORD_0": g.accessor([[0, 2], [2, 2], [2, 0], [0, 0]])},
+                         "indices": g.accessor([0, 1, 2, 0, 2, 3], 5123), "material": floor}]))
+    g.node(mesh=g.mesh([{"attributes": cube_prim, "indices": cube_idx, "material": gold}]), translation=[-0.7, 0.5, 0],
+           rotation=[0, 0.2588, 0, 0.9659])
+    g.node(mesh=g.mesh([{"attributes": cube_prim, "indices": cube_idx, "material": lamp}]), translation=[0.8, 0.4, -0.3],
+           scale=[0.8, 0.8, 0.8])
+    g.j["extensionsUsed"] = ["KHR_lights_punctual"]
+    g.j["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"type": "directional", "color": [1, 0.95, 0.9], "intensity": 0.8},
+        {"type": "point", "color": [0.4, 0.6, 1.0], "intensity": 6, "range": 6},
+        {"type": "spot", "color": [1, 0.9, 0.7], "intensity": 12, "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.6}}]}}
+    # A light shines along its node's -z: turned -90 degrees about x, the spot looks down.
+    g.node(extensions={"KHR_lights_punctual": {"light": 0}}, rotation=[-0.3827, 0.3, 0, 0.8739])
+    g.node(extensions={"KHR_lights_punctual": {"light": 1}}, translation=[1.5, 1.2, 1.0])
+    g.node(extensions={"KHR_lights_punctual": {"light": 2}}, translation=[-0.5, 3.0, 0.5], rotation=[-0.7071, 0, 0, 0.7071])
+    write('models/pbr_lights.gltf', g.gltf())
+
+
 def main():
+    make_pbr_lights()
     make_instanced()
     make_textured_glb()
     make_alpha_modes()
@@ -273,6 +312,8 @@ def main():
     scene('model_strips_fans_colors', [{"model": "models/strips_fans.gltf"}], eye=(0, 0, 3.5), target=(-0.1, 0, 0))
     scene('model_lines_points', [{"model": "models/lines_points.gltf"}], eye=(0, 0, 3.5))
     scene('model_obj_mtl', [{"model": "models/materials.obj"}], eye=(0.3, 0.4, 3.6))
+    # (A model object is lit by the scene's lights; `render MODEL` uses the file's.)
+    scene('model_pbr_maps', [{"model": "models/pbr_lights.gltf"}], eye=(0.5, 2.4, 3.6), target=(0, 0.3, 0))
     # Models of Debian's assimp-testmodels, in place.
     scene('model_box_textured', [{"model": CORPUS + "/glTF2/BoxTextured-glTF/BoxTextured.gltf"}], eye=(1.6, 1.3, 2.2))
     scene('model_engine_glb', [{"model": CORPUS + "/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"}],

@@ -273,6 +273,16 @@ TEST(ShadingModels, EightFragmentsAtOnceEqualOneAtATime) {
     expect_batch_equals_scalar<Shading::Phong, true, true>(u);
     expect_batch_equals_scalar<Shading::Phong, false, false>(u);
     expect_batch_equals_scalar<Shading::BlinnPhong, false, true>(u);
+    // pbr, with every map and without the base color texture.
+    u.metallic = 0.7f, u.roughness = 0.6f, u.occlusion_strength = 0.5f;
+    u.emissive = glm::vec3(0.2f, 0.1f, 0.05f);
+    u.metallic_roughness_texture = u.occlusion_texture = u.emissive_texture = &texture;
+    expect_batch_equals_scalar<Shading::Pbr, true, true>(u);
+    u.texture = nullptr;
+    expect_batch_equals_scalar<Shading::Pbr, true, false>(u);
+    u.texture = &texture;
+    u.metallic_roughness_texture = u.occlusion_texture = u.emissive_texture = nullptr;
+    expect_batch_equals_scalar<Shading::Pbr, false, true>(u);
     u.has_specular = false;
     expect_batch_equals_scalar<Shading::BlinnPhong, true, false>(u);
     u.has_specular = true;

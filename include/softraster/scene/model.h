@@ -18,6 +18,7 @@ struct Model {
     // placed by several nodes (instancing) is one Mesh shared by their objects, not copies.
     std::vector<SceneObject> objects;
     std::vector<Camera> cameras;         // the file's cameras, placed by their nodes
+    Lights lights;                       // the file's lights (KHR_lights_punctual), placed by their nodes
     std::vector<std::string> warnings;   // e.g. a texture that could not be read (drawn untextured)
     std::vector<std::string> ignored;    // what the file has that the pipeline does not draw yet
 };
@@ -53,8 +54,9 @@ struct ModelPicture {
 };
 
 // A scene that shows the model: a perspective camera (30 degrees) whose view the model's
-// bounding sphere fills, from the chosen side (+y is up), and a default light rig (a key
-// light from the upper left of the camera, a fill light from the right, ambient). Throws
+// bounding sphere fills, from the chosen side (+y is up), and the file's lights with a dim
+// ambient light, or where the file has none a default rig (a key light from the upper left
+// of the camera, a fill light from the right, ambient). Throws
 // InputError when `picture.camera` names no camera of the file.
 Scene model_scene(const Model& model, const ModelPicture& picture);
 

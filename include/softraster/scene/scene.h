@@ -18,7 +18,7 @@
 
 namespace softraster {
 
-enum class Shading { Unlit, Flat, Gouraud, Lambert, BlinnPhong, Normals, Depth, Phong };
+enum class Shading { Unlit, Flat, Gouraud, Lambert, BlinnPhong, Normals, Depth, Phong, Pbr };
 
 struct Material {
     Shading shading = Shading::Lambert;
@@ -34,6 +34,14 @@ struct Material {
     std::optional<float> alpha_cutoff;  // discard fragments whose alpha is below it
     bool alpha_to_coverage = false;
     bool affine = false;                // interpolation "affine": varyings linear in window space
+    // Version 2, shading "pbr" (glTF's metallic-roughness; docs/scene-format.md
+    // "Physically based materials"). The textures use the material's sampler and uv.
+    float metallic = 0.0f, roughness = 0.5f;
+    glm::vec3 emissive{0.0f};
+    float occlusion_strength = 1.0f;
+    std::shared_ptr<const Texture> metallic_roughness_texture;  // roughness from G, metallic from B
+    std::shared_ptr<const Texture> occlusion_texture;           // R
+    std::shared_ptr<const Texture> emissive_texture;            // RGB
 };
 
 // An object's per-fragment state (version 2; version 1 objects have the defaults).

@@ -16,6 +16,7 @@
 #include "softraster/scene/mesh.h"
 #include "softraster/scene/scene.h"
 #include "softraster/shading/lighting.h"
+#include "softraster/shading/pbr.h"
 #include "softraster/shading/surface_uniforms.h"
 #include "softraster/shading/texture.h"
 
@@ -31,9 +32,10 @@ using MaybeVarying = std::conditional_t<Present, T, NoVarying<Tag>>;
 template <Shading M, bool Textured, bool Colored>
 struct SurfaceVaryings {
     static constexpr bool kSpecular = M == Shading::BlinnPhong || M == Shading::Phong;
-    static constexpr bool kLit = M == Shading::Flat || M == Shading::Lambert || kSpecular;
+    static constexpr bool kPbr = M == Shading::Pbr;
+    static constexpr bool kLit = M == Shading::Flat || M == Shading::Lambert || kSpecular || kPbr;
     static constexpr bool kBase = M != Shading::Normals && M != Shading::Depth;  // reads color and texture
-    static constexpr bool kWorld = kSpecular;
+    static constexpr bool kWorld = kSpecular || kPbr;
     static constexpr bool kNormal = kLit || M == Shading::Normals;
     static constexpr bool kIntensity = M == Shading::Gouraud;
     static constexpr bool kUv = kBase && Textured;
@@ -100,10 +102,12 @@ struct SurfaceShader {
             if constexpr (Varyings::kColor) base *= in.color;
             if constexpr (Varyings::kUv) {
                 const glm::vec4 d = in.uv_derivatives;
-                base *= u->texture->sample(in.uv, UvDerivatives{d.x, d.y, d.z, d.w}, u->sampler);
+                if (Model != Shading::Pbr || u->texture) base *= u->texture->sample(in.uv, UvDerivatives{d.x, d.y, d.z, d.w}, u->sampler);
             }
             if constexpr (Model == Shading::Unlit) {
                 out = base;
+            } else if constexpr (Model == Shading::Pbr) {
+                out = glm::vec4(pbr_rgb(in, base), base.a);
             } else if constexpr (Model == Shading::Gouraud) {
                 out = glm::vec4(glm::vec3(base) * in.intensity, base.a);
             } else {  // Lambert, Flat (N is the face normal), BlinnPhong, Phong
@@ -126,6 +130,79 @@ struct SurfaceShader {
         return true;
     }
 
+    // pbr: the metallic-roughness BRDF (pbr.h) over the lights, ambient light on the diffuse
+    // color times the occlusion, and the emissive color.
+    glm::vec3 pbr_rgb(const Varyings& in, const glm::vec4& base) const {
+        float metallic = u->metallic, roughness = u->roughness, occlusion = 1.0f;
+        glm::vec3 emissive = u->emissive;
+        if constexpr (Varyings::kUv) {
+            const glm::vec4 dv = in.uv_derivatives;
+            const UvDerivatives d{dv.x, dv.y, dv.z, dv.w};
+            if (u->metallic_roughness_texture) {
+                const glm::vec4 t = u->metallic_roughness_texture->sample(in.uv, d, u->sampler);
+                roughness *= t.g, metallic *= t.b;
+            }
+            if (u->occlusion_texture) occlusion = 1.0f + u->occlusion_strength * (u->occlusion_texture->sample(in.uv, d, u->sampler).r - 1.0f);
+            if (u->emissive_texture) emissive *= glm::vec3(u->emissive_texture->sample(in.uv, d, u->sampler));
+        }
+        const PbrSurface s = pbr_surface(glm::vec3(base), metallic, std::max(kMinRoughness, roughness));
+        const glm::vec3 n = glm::normalize(in.normal), v = glm::normalize(u->eye - in.world);
+        const float nv = std::max(0.0f, glm::dot(n, v));
+        glm::vec3 rgb = u->lights.ambient * s.diffuse * occlusion;
+        for (int i = 0; i < u->lights.count; ++i) rgb += u->lights.color[size_t(i)] * pbr_light(s, n, v, u->lights.to_light[size_t(i)], nv);
+        for (int i = 0; i < u->lights.positional_count; ++i) {
+            glm::vec3 l;
+            const glm::vec3 c = positional_light(u->lights.positional[i], in.world, l);
+            rgb += c * pbr_light(s, n, v, l, nv);
+        }
+        return rgb + emissive;
+    }
+
+    simd::vec3x8 pbr_rgb8(const std::array<simd::f8, kVaryingCount<Varyings>>& in, const std::array<simd::f8, 4>& base) const {
+        using namespace simd;
+        f8 metallic = splat(u->metallic), roughness = splat(u->roughness), occlusion = splat(1.0f);
+        vec3x8 emissive{splat(u->emissive.x), splat(u->emissive.y), splat(u->emissive.z)};
+        if constexpr (Varyings::kUv) {
+            constexpr size_t d = Varyings::kUvDerivativesAt;
+            const std::array<f8, 4> dd{in[d], in[d + 1], in[d + 2], in[d + 3]};
+            std::array<f8, 4> t;
+            auto sample = [&](const Texture* tex) { tex->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], dd, u->sampler, t); };
+            if (u->metallic_roughness_texture) {
+                sample(u->metallic_roughness_texture);
+                roughness *= t[1], metallic *= t[2];
+            }
+            if (u->occlusion_texture) {
+                sample(u->occlusion_texture);
+                occlusion = 1.0f + u->occlusion_strength * (t[0] - 1.0f);
+            }
+            if (u->emissive_texture) {
+                sample(u->emissive_texture);
+                emissive = {emissive.x * t[0], emissive.y * t[1], emissive.z * t[2]};
+            }
+        }
+        const PbrSurface8 s = pbr_surface(vec3x8{base[0], base[1], base[2]}, metallic, max(splat(kMinRoughness), roughness));
+        const vec3x8 n = normalize(vec3x8{in[Varyings::kNormalAt], in[Varyings::kNormalAt + 1], in[Varyings::kNormalAt + 2]});
+        const vec3x8 p{in[Varyings::kWorldAt], in[Varyings::kWorldAt + 1], in[Varyings::kWorldAt + 2]};
+        const vec3x8 v = normalize({u->eye.x - p.x, u->eye.y - p.y, u->eye.z - p.z});
+        const f8 nv = max(splat(0.0f), dot(n, v));
+        const glm::vec3 a = u->lights.ambient;
+        vec3x8 rgb{a.x * s.diffuse.x * occlusion, a.y * s.diffuse.y * occlusion, a.z * s.diffuse.z * occlusion};
+        auto add = [&](const vec3x8& c, const vec3x8& l) {
+            const vec3x8 f = pbr_light(s, n, v, l, nv);
+            rgb.x += c.x * f.x, rgb.y += c.y * f.y, rgb.z += c.z * f.z;
+        };
+        for (int i = 0; i < u->lights.count; ++i) {
+            const glm::vec3 c = u->lights.color[size_t(i)], l = u->lights.to_light[size_t(i)];
+            add({splat(c.x), splat(c.y), splat(c.z)}, {splat(l.x), splat(l.y), splat(l.z)});
+        }
+        for (int i = 0; i < u->lights.positional_count; ++i) {
+            vec3x8 l;
+            const vec3x8 c = positional_light(u->lights.positional[i], p, l);
+            add(c, l);
+        }
+        return {rgb.x + emissive.x, rgb.y + emissive.y, rgb.z + emissive.z};
+    }
+
     // The same formulas for eight fragments of a row (fragment_shading.h).
     void fragment_batch(const std::array<simd::f8, kVaryingCount<Varyings>>& in, simd::f8 z, bool,
                         std::array<simd::f8, 4>& out) const {
@@ -144,11 +221,16 @@ struct SurfaceShader {
             if constexpr (Varyings::kUv) {
                 std::array<f8, 4> tex;
                 constexpr size_t d = Varyings::kUvDerivativesAt;
-                u->texture->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], {in[d], in[d + 1], in[d + 2], in[d + 3]}, u->sampler, tex);
-                for (size_t c = 0; c < 4; ++c) base[c] *= tex[c];
+                if (Model != Shading::Pbr || u->texture) {
+                    u->texture->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], {in[d], in[d + 1], in[d + 2], in[d + 3]}, u->sampler, tex);
+                    for (size_t c = 0; c < 4; ++c) base[c] *= tex[c];
+                }
             }
             if constexpr (Model == Shading::Unlit) {
                 out = base;
+            } else if constexpr (Model == Shading::Pbr) {
+                const vec3x8 rgb = pbr_rgb8(in, base);
+                out = {rgb.x, rgb.y, rgb.z, base[3]};
             } else if constexpr (Model == Shading::Gouraud) {
                 const vec3x8 i = vec3_at(Varyings::kIntensityAt);
                 out = {base[0] * i.x, base[1] * i.y, base[2] * i.z, base[3]};

@@ -24,6 +24,13 @@ struct SurfaceUniforms {
     float shininess = 32.0f;
     const Texture* texture = nullptr;
     Sampler sampler;
+    // pbr (pbr.h): the factors and the maps, sampled with the same sampler and uv.
+    float metallic = 0.0f, roughness = 0.5f;
+    glm::vec3 emissive{0.0f};
+    float occlusion_strength = 1.0f;
+    const Texture* metallic_roughness_texture = nullptr;
+    const Texture* occlusion_texture = nullptr;
+    const Texture* emissive_texture = nullptr;
 };
 
 }  // namespace softraster
