@@ -320,7 +320,13 @@ struct Loader {
         if (rel.empty()) n.fail("empty texture path");
         const std::string path = (dir / rel).lexically_normal().string();
         auto& slot = textures[path];
-        if (!slot) slot = std::make_shared<Texture>(softraster::read_image(path));
+        if (!slot) {
+            try {
+                slot = std::make_shared<Texture>(softraster::read_image(path));
+            } catch (const InputError& e) {
+                n.fail(e.what());  // which key named the picture, then what is wrong with it
+            }
+        }
         return slot;
     }
 

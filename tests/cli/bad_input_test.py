@@ -186,6 +186,19 @@ expect_bad('spot outer over 90', with_lights('spo.json', {"spot": [{"position": 
 expect_bad('spot zero direction', with_lights('spd.json', {"spot": [{"position": [0, 1, 0], "direction": [0, 0, 0]}]}), ['lights.spot[0].direction'])
 expect_bad('too many lights', with_lights('pl257.json', {"point": [{"position": [0, 1, 0]}] * 257}), ['lights.point', 'at most 256'])
 expect_bad('phong in v1', v1_with('v1phong.json', {"material": {"shading": "phong"}}), ['objects[0].material.shading', 'version 2'])
+expect_bad('pbr in v1', v1_with('v1pbr.json', {"material": {"shading": "pbr"}}), ['objects[0].material.shading', 'version 2'])
+expect_bad('metallic in v1', v1_with('v1metal.json', {"material": {"metallic": 1}}), ['objects[0].material.metallic', 'version 2 key'])
+expect_bad('metallic out of range', v2('metal2.json', {"material": {"shading": "pbr", "metallic": 1.5}}), ['objects[0].material.metallic', 'out of range'])
+expect_bad('roughness negative', v2('rough.json', {"material": {"shading": "pbr", "roughness": -0.1}}), ['objects[0].material.roughness', 'out of range'])
+expect_bad('emissive negative', v2('emis.json', {"material": {"shading": "pbr", "emissive": [1, -1, 0]}}), ['objects[0].material.emissive'])
+expect_bad('occlusion_strength out of range', v2('aos.json', {"material": {"shading": "pbr", "occlusion_strength": 2}}),
+           ['objects[0].material.occlusion_strength', 'out of range'])
+expect_bad('missing metallic-roughness map', v2('mrmiss.json', {"material": {"shading": "pbr", "metallic_roughness_texture": "nope.png"}}),
+           ['objects[0].material.metallic_roughness_texture', 'nope.png'])
+expect_bad('missing occlusion map', v2('aomiss.json', {"material": {"shading": "pbr", "occlusion_texture": "none.png"}}),
+           ['objects[0].material.occlusion_texture', 'none.png'])
+expect_bad('emissive map not an image', v2('emmiss.json', {"material": {"shading": "pbr", "emissive_texture": "mrmiss.json"}}),
+           ['objects[0].material.emissive_texture'])
 expect_bad('v2 key in v1 (primitive)', v1_with('v1prim.json', {"primitive": "lines"}), ['objects[0].primitive', 'version 2'])
 expect_bad('unknown primitive', v2('v2prim.json', {"primitive": "quads"}), ['objects[0].primitive', "unknown value 'quads'"])
 expect_bad('line_width 0.5', v2('v2lw.json', {"line_width": 0.5}), ['objects[0].line_width', 'out of range'])
