@@ -20,22 +20,9 @@ using softraster::Shading;
 // Each (shading model, texture, light count) combination is compiled as its own program,
 // with the choices as #defines, as a real OpenGL application would: llvmpipe then runs no
 // branch on material state per fragment (fair timing), and the formulas read as in the spec.
-const char* kVertexShader = R"(
-layout(location = 0) in vec3 a_pos;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec2 a_uv;
-layout(location = 3) in vec4 a_color;
-uniform mat4 u_mvp;
-uniform mat4 u_model;
-uniform mat3 u_normal_matrix;
-uniform vec3 u_ambient;
-uniform vec3 u_to_light[8];
-uniform vec3 u_light_color[8];
-INTERP out vec3 v_world;
-INTERP out vec3 v_normal;
-INTERP out vec2 v_uv;
-INTERP out vec4 v_color;
-INTERP out vec3 v_intensity;
+// Both stages: the point and spot lights' uniforms and term (docs/scene-format.md
+// "Point and spot lights").
+const char* kLightPrelude = R"(
 #if POSITIONAL > 0
 uniform vec3 u_pl_position[POSITIONAL];
 uniform vec3 u_pl_color[POSITIONAL];       // color times intensity
@@ -52,6 +39,24 @@ vec3 positional_light(int i, vec3 p, out vec3 l) {
     return u_pl_color[i] * (k * a * a);
 }
 #endif
+)";
+
+const char* kVertexShader = R"(
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec4 a_color;
+uniform mat4 u_mvp;
+uniform mat4 u_model;
+uniform mat3 u_normal_matrix;
+uniform vec3 u_ambient;
+uniform vec3 u_to_light[8];
+uniform vec3 u_light_color[8];
+INTERP out vec3 v_world;
+INTERP out vec3 v_normal;
+INTERP out vec2 v_uv;
+INTERP out vec4 v_color;
+INTERP out vec3 v_intensity;
 void main() {
     v_world = (u_model * vec4(a_pos, 1.0)).xyz;
     v_normal = u_normal_matrix * a_normal;
@@ -93,22 +98,6 @@ uniform vec3 u_to_light[8];
 uniform vec3 u_light_color[8];
 uniform float u_alpha_cutoff;
 out vec4 frag;
-#if POSITIONAL > 0
-uniform vec3 u_pl_position[POSITIONAL];
-uniform vec3 u_pl_color[POSITIONAL];       // color times intensity
-uniform float u_pl_inv_range2[POSITIONAL]; // 1 / range^2, 0 without a range
-uniform vec3 u_pl_spot_dir[POSITIONAL];
-uniform vec2 u_pl_cone[POSITIONAL];        // spot: 1 / (cos inner - cos outer), -cos outer * that; point: 0, 1
-vec3 positional_light(int i, vec3 p, out vec3 l) {
-    vec3 lv = u_pl_position[i] - p;
-    float d2 = max(dot(lv, lv), 1e-8);
-    l = lv / sqrt(d2);
-    float t = d2 * u_pl_inv_range2[i];
-    float k = clamp(1.0 - t * t, 0.0, 1.0) / d2;
-    float a = clamp(dot(-l, u_pl_spot_dir[i]) * u_pl_cone[i].x + u_pl_cone[i].y, 0.0, 1.0);
-    return u_pl_color[i] * (k * a * a);
-}
-#endif
 #if SHADING == 8
 // glTF 2.0 appendix B: Schlick's Fresnel, GGX, the height-correlated Smith visibility; a
 // light adds pi f c (N.L) (the pi: a light's color is what a white diffuse surface reflects).
@@ -217,8 +206,8 @@ void main() {
 
 GLuint compile(GLenum type, const std::string& defines, const char* src) {
     const GLuint s = glCreateShader(type);
-    const char* parts[] = {"#version 330 core\n", defines.c_str(), src};
-    glShaderSource(s, 3, parts, nullptr);
+    const char* parts[] = {"#version 330 core\n", defines.c_str(), kLightPrelude, src};
+    glShaderSource(s, 4, parts, nullptr);
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);

@@ -7,21 +7,13 @@ metallic-roughness, occlusion and emissive maps; spot and point lights over PBR 
 compares. Run it again after editing; the files it writes are committed."""
 import json, math
 
-from make_scenes import png, write
+from make_scenes import texture, write
 
 
 def scene(name, lights, objects, camera, width=192, height=128, **image):
     img = {"width": width, "height": height, "background": [0.04, 0.04, 0.06, 1], **image}
     s = {"version": 2, "image": img, "camera": camera, "lights": lights, "objects": objects}
     write('pbr_' + name + '.json', json.dumps(s, indent=1))
-
-
-def texture(name, w, h, f):
-    px = []
-    for y in range(h):
-        for x in range(w):
-            px += f(x, y)
-    write('textures/' + name, png(w, h, px))
 
 
 def main():

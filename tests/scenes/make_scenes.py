@@ -39,6 +39,15 @@ def png(w, h, pixels, channels=4):
             chunk(b'IDAT', zlib.compress(raw)) + chunk(b'IEND', b''))
 
 
+def texture(name, w, h, f):
+    """textures/NAME: a w x h RGBA PNG whose pixel (x, y), row 0 at the top, is f(x, y)."""
+    px = []
+    for y in range(h):
+        for x in range(w):
+            px += f(x, y)
+    write('textures/' + name, png(w, h, px))
+
+
 def bmp(w, h, rgb):  # 24-bit, bottom-up rows
     row = (w * 3 + 3) & ~3
     data = b''

@@ -9,7 +9,7 @@ llvmpipe (tests/reference) and compares. Run it again after editing; the files i
 are committed."""
 import json, os
 
-from make_scenes import png, write
+from make_scenes import texture, write
 
 LIGHTS = {"ambient": [0.2, 0.2, 0.22],
           "directional": [{"direction": [-0.4, -0.7, -0.6], "color": [0.85, 0.82, 0.78]}]}
@@ -20,14 +20,6 @@ def scene(name, objects, camera=FLOOR_CAM, width=160, height=120, **image):
     img = {"width": width, "height": height, "background": [0.55, 0.7, 0.9, 1], **image}
     s = {"version": 2, "image": img, "camera": camera, "lights": LIGHTS, "objects": objects}
     write('tex_' + name + '.json', json.dumps(s, indent=1))
-
-
-def texture(name, w, h, f):
-    px = []
-    for y in range(h):
-        for x in range(w):
-            px += f(x, y)
-    write('textures/' + name, png(w, h, px))
 
 
 def main():
