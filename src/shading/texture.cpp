@@ -193,17 +193,18 @@ inline i8 wrap_texel8(i8 i, i8 n, Wrap w) {
     return i;
 }
 
-// p[index[k]] for each lane: AVX2's gather on that path, a loop on the other.
+// out[k] = p[index[k]] for each lane: AVX2's gather on that path, a loop on the other. The
+// vectors go by reference: where the AVX2 copy is not flattened into one function
+// (sanitizer builds) this is a call from code compiled without AVX, which passes a 32-byte
+// vector by value differently.
 template <bool Wide>
-inline i8 gather(const uint32_t* p, i8 index) {
-    i8 r;
-    for (int k = 0; k < simd::kLanes; ++k) r[k] = int32_t(p[index[k]]);
-    return r;
+inline void gather(const uint32_t* p, const i8& index, i8& out) {
+    for (int k = 0; k < simd::kLanes; ++k) out[k] = int32_t(p[index[k]]);
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 template <>
-[[gnu::target("avx2")]] inline i8 gather<true>(const uint32_t* p, i8 index) {
-    return i8(_mm256_i32gather_epi32(reinterpret_cast<const int*>(p), __m256i(index), 4));
+[[gnu::target("avx2")]] inline void gather<true>(const uint32_t* p, const i8& index, i8& out) {
+    out = i8(_mm256_i32gather_epi32(reinterpret_cast<const int*>(p), __m256i(index), 4));
 }
 #endif
 
@@ -283,7 +284,8 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         for (int t = 0; t < 4; ++t) {
             const i8 border = (is[t] < 0) | (js[t] < 0);  // (never without a border wrap mode)
             const i8 index = l.offset + ((js[t] >> 2) * l.tiles_x + (is[t] >> 2)) * 16 + (js[t] & 3) * 4 + (is[t] & 3);
-            const i8 texel = gather<Wide>(texels, has_border ? select(border, splat_i(0), index) : index);
+            i8 texel;
+            gather<Wide>(texels, has_border ? select(border, splat_i(0), index) : index, texel);
             for (int k = 0; k < 4; ++k) {
                 const f8 value = to_float((texel >> (8 * k)) & 255) * (1.0f / 255.0f);
                 c[t][size_t(k)] = has_border ? select(border, splat(s.border[k]), value) : value;
