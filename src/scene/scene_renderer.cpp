@@ -58,7 +58,7 @@ float view_depth_of_bounds_center(const Mesh& mesh, const std::vector<uint32_t>&
 }
 
 // A point or spot light's numbers for the shaders (lighting.h positional_light).
-PositionalLight positional_light(const PunctualLight& l) {
+PositionalLight shader_numbers(const PunctualLight& l) {
     PositionalLight p;
     p.position = l.position;
     p.color = l.color * l.intensity;
@@ -167,7 +167,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     : scene_(scene), pool_(threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr) {
     const glm::mat4 view = view_matrix(scene.camera);
     const glm::mat4 proj = projection_matrix(scene.camera, scene.width, scene.height);
-    for (const PunctualLight& l : scene.lights.punctual) positional_lights_.push_back(positional_light(l));
+    for (const PunctualLight& l : scene.lights.punctual) positional_lights_.push_back(shader_numbers(l));
     const LightSet lights = light_set(scene.lights, positional_lights_);
 
     struct Keyed {
