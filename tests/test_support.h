@@ -182,4 +182,13 @@ SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase dept
             ctx.fragments_shaded()};
 }
 
+// The pipelines of the shaders most tests share are compiled once, in test_support.cpp, not
+// in every test file that draws with them (each copy of a pipeline costs seconds of build).
+// (Function templates: an explicit instantiation declaration does not stop an inline
+// function, such as Context::draw, from being compiled again where it is called.)
+extern template void draw<ConstantColorShader>(Context&, const ConstantColorShader&, const std::vector<ClipVertexIn>&,
+                                               const std::vector<uint32_t>&, Topology);
+extern template SamplePicture draw_rgb_meshes<true>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*);
+extern template SamplePicture draw_rgb_meshes<false>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*);
+
 }  // namespace softraster::test

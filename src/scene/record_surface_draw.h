@@ -43,4 +43,25 @@ void record_surface_draw(Context& ctx, const SceneRenderer::Draw& d) {
 SOFTRASTER_SURFACE_MODELS(SOFTRASTER_DECLARE_SURFACE_DRAW)
 #undef SOFTRASTER_DECLARE_SURFACE_DRAW
 
+// The phases that depend on the varying count only (binning and the visibility pass, see
+// draw_commands.h) are compiled once per count in surface_phases.cpp, not again in every
+// model's file whose shaders have that count. A count missing here still works, compiled
+// where it is used.
+#define SOFTRASTER_SURFACE_VARYING_COUNTS(X) X(1) X(3) X(4) X(6) X(7) X(9) X(10) X(12) X(13) X(16)
+#define SOFTRASTER_BIN_PHASE(S, N)                                                                                    \
+    void phases::bin_triangles<S, N>(std::span<const uint32_t>, const ShadedVertex<N>*, const DrawTarget&, FaceState, \
+                                     FlatVaryings, TriangleBin<N>&)
+#define SOFTRASTER_VISIBILITY_PHASE(S, N)                                                                               \
+    void phases::visibility_pass<S, N>(const BinnedTriangles<N>&, const RenderState&, Framebuffer&, int, int, const Rect&, \
+                                       uint32_t, uint32_t*)
+#define SOFTRASTER_SURFACE_PHASES(N, WHICH)                                                              \
+    WHICH template SOFTRASTER_BIN_PHASE(1, N);                                                           \
+    WHICH template SOFTRASTER_BIN_PHASE(4, N);                                                           \
+    WHICH template SOFTRASTER_BIN_PHASE(kMaxSamples, N);                                                 \
+    WHICH template SOFTRASTER_VISIBILITY_PHASE(1, N);                                                    \
+    WHICH template SOFTRASTER_VISIBILITY_PHASE(4, N);
+#define SOFTRASTER_DECLARE_SURFACE_PHASES(N) SOFTRASTER_SURFACE_PHASES(N, extern)
+SOFTRASTER_SURFACE_VARYING_COUNTS(SOFTRASTER_DECLARE_SURFACE_PHASES)
+#undef SOFTRASTER_DECLARE_SURFACE_PHASES
+
 }  // namespace softraster

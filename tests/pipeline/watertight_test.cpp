@@ -12,6 +12,7 @@
 #include "softraster/scene/builtin_meshes.h"
 #include "softraster/scene/scene_renderer.h"
 #include "softraster/shading/surface_shader.h"
+#include "scene/record_surface_draw.h"
 #include "test_support.h"
 
 using namespace softraster;
@@ -58,8 +59,10 @@ void expect_no_holes(const Mesh& mesh, const glm::mat4& model, int samples) {
     Framebuffer fb(W, H, samples);
     Context ctx(fb);
     ctx.clear(glm::vec4(0, 0, 0, 1));
-    ctx.draw(Topology::Triangles, SurfaceShader<Shading::Unlit, false>{&u}, std::span<const MeshVertex>(mesh.vertices),
-             std::span<const uint32_t>(mesh.indices));
+    SceneRenderer::Draw draw;  // drawn as a scene object is, by the library's compiled unlit pipeline
+    draw.mesh = &mesh;
+    draw.uniforms = u;
+    record_surface_draw<Shading::Unlit>(ctx, draw);
     ctx.finish();
     std::vector<glm::dvec2> projected;
     for (const MeshVertex& v : mesh.vertices) {
