@@ -96,9 +96,15 @@ TEST(Pbr, ConservesEnergy) {
                 const std::string where = "metallic " + std::to_string(metallic) + " roughness " + std::to_string(roughness) +
                                           " view " + std::to_string(view);
                 EXPECT_LE(albedo, 1.04) << where;
-                if (metallic == 0.0f) EXPECT_GT(albedo, 0.9) << where;
-                if (metallic == 1.0f && roughness == 1.0f) EXPECT_NEAR(albedo, 2 * (1 - std::log(2.0)) / (1 + v.z), 2e-3) << where;
-                if (metallic == 1.0f) EXPECT_GT(albedo, 0.3) << where;
+                if (metallic == 0.0f) {
+                    EXPECT_GT(albedo, 0.9) << where;
+                }
+                if (metallic == 1.0f && roughness == 1.0f) {
+                    EXPECT_NEAR(albedo, 2 * (1 - std::log(2.0)) / (1 + v.z), 2e-3) << where;
+                }
+                if (metallic == 1.0f) {
+                    EXPECT_GT(albedo, 0.3) << where;
+                }
             }
 }
 

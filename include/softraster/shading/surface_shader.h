@@ -116,9 +116,12 @@ struct SurfaceShader {
                 if constexpr (Varyings::kSpecular) {
                     if (u->has_specular || u->lights.positional_count) {
                         const glm::vec3 v = glm::normalize(u->eye - in.world);
-                        if (u->has_specular) spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess);
-                        if (u->has_specular) positional_terms<true, kSpecularModel>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec);
-                        else positional_terms<false>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec);
+                        if (u->has_specular) {
+                            spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess);
+                            positional_terms<true, kSpecularModel>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec);
+                        } else {
+                            positional_terms<false>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec);
+                        }
                     }
                 }
                 glm::vec3 rgb = glm::vec3(base) * diffuse;
@@ -241,9 +244,12 @@ struct SurfaceShader {
                     if (u->has_specular || u->lights.positional_count) {
                         const vec3x8 p = vec3_at(Varyings::kWorldAt);
                         const vec3x8 v = normalize({u->eye.x - p.x, u->eye.y - p.y, u->eye.z - p.z});
-                        if (u->has_specular) spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess);
-                        if (u->has_specular) positional_terms<true, kSpecularModel>(u->lights, n, p, v, u->specular, u->shininess, d, spec);
-                        else positional_terms<false>(u->lights, n, p, v, u->specular, u->shininess, d, spec);
+                        if (u->has_specular) {
+                            spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess);
+                            positional_terms<true, kSpecularModel>(u->lights, n, p, v, u->specular, u->shininess, d, spec);
+                        } else {
+                            positional_terms<false>(u->lights, n, p, v, u->specular, u->shininess, d, spec);
+                        }
                     }
                 }
                 out = {base[0] * d.x, base[1] * d.y, base[2] * d.z, base[3]};
