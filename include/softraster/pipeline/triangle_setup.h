@@ -123,6 +123,14 @@ bool setup_coverage(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const 
     return true;
 }
 
+// Whether every varying but the flat ones has one value at the three corners.
+template <uint64_t Flat, int N>
+bool constant_varyings(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const ShadedVertex<N>& v2) {
+    for (size_t k = 0; k < size_t(N); ++k)
+        if (!((Flat >> k) & 1) && !(v0.clip.var[k] == v1.clip.var[k] && v1.clip.var[k] == v2.clip.var[k])) return false;
+    return true;
+}
+
 // Makes the interpolation planes of a triangle whose coverage is set up. Flat: the shader's
 // flat varyings (shader.h), whose planes are the provoking vertex's value, constant.
 template <uint64_t Flat = 0, int N>
@@ -160,6 +168,17 @@ void setup_planes(TriangleSetup<N>& t) {
     }
     const float z_hi = float(z0);
     t.z = DepthPlane{z_hi, float(z0 - double(z_hi)), float(dzdx), float(dzdy)};
+    // A triangle whose corners carry equal varyings (a flat-shaded face's normal, a plane's
+    // normal, one color) has them everywhere: (a/w)/(1/w) = a exactly in real numbers, and
+    // taking a itself avoids the rounding of that division (and the division). A smooth
+    // mesh's triangle usually differs in its first varying: the search stops there.
+    t.constant_varyings = constant_varyings<Flat>(v0, v1, v2);
+    if (t.constant_varyings) {
+        t.inv_w = Plane{1.0f, 0.0f, 0.0f};
+        for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
+        t.has_planes = true;
+        return;
+    }
     if (t.options.noperspective) {
         t.inv_w = Plane{1.0f, 0.0f, 0.0f};
         for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = plane(v0.clip.var[k], v1.clip.var[k], v2.clip.var[k]);
@@ -170,15 +189,6 @@ void setup_planes(TriangleSetup<N>& t) {
     }
     for (size_t k = 0; k < size_t(N); ++k)
         if ((Flat >> k) & 1) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
-    // A triangle whose corners carry equal varyings (a flat-shaded face's normal, a plane's
-    // normal, one color) has them everywhere: (a/w)/(1/w) = a exactly in real numbers, and
-    // taking a itself avoids the rounding of that division (and the division).
-    t.constant_varyings = true;
-    for (size_t k = 0; k < size_t(N); ++k)
-        if (!((Flat >> k) & 1) && !(v0.clip.var[k] == v1.clip.var[k] && v1.clip.var[k] == v2.clip.var[k]))
-            t.constant_varyings = false;
-    if (t.constant_varyings)
-        for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
     t.has_planes = true;
 }
 
