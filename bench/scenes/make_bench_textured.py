@@ -7,8 +7,8 @@
   bench_trilinear                 a corridor of four textured walls to the horizon, the texture
                                   repeated 24 times along it: minified at a grazing angle
   bench_pbr                       the textured model with glTF metallic-roughness materials (the
-                                  texture also as the metallic-roughness map), a directional, a
-                                  point and a spot light
+                                  texture also as the metallic-roughness map, a normal map of
+                                  bevelled tiles), a directional, a point and a spot light
 The texture (textures/tiles_1024.png) and the corridor's walls (corridor_*.obj) are written
 here too. Run it again after editing; the files it writes are committed."""
 import json, math, os, struct, zlib
@@ -61,6 +61,21 @@ def tiles(n):
         yield row
 
 
+def tile_normals(n):
+    """The tiles' normal map (tangent space, +y up the picture): each tile's edges bevelled,
+    the normal leaning out across the nearest edge, flat on the tile and in the grout."""
+    flat = (128, 128, 255)
+    lean = [tuple(int(round(255 * (c * 0.5 + 0.5))) for c in (d[0] * 0.6, d[1] * 0.6, 0.8)) for d in ((-1, 0), (1, 0), (0, 1), (0, -1))]
+    for y in range(n):
+        row = []
+        for x in range(n):
+            fx, fy = (x * 8 % n) / n, (y * 8 % n) / n
+            edges = (fx, 1 - fx, fy, 1 - fy)  # left, right, top (row 0 at the top: +y), bottom
+            k = min(range(4), key=lambda i: edges[i])
+            row.append(lean[k] if 0.03 <= edges[k] < 0.1 else flat)
+        yield row
+
+
 def quad_obj(name, corners, uv_max):
     """One quad (two triangles, counter-clockwise as seen from the side that faces the
     corridor's inside) with uv from (0, 0) to uv_max, so the texture repeats."""
@@ -75,6 +90,7 @@ def quad_obj(name, corners, uv_max):
 
 os.makedirs(os.path.join(HERE, 'textures'), exist_ok=True)
 png(os.path.join(HERE, 'textures', 'tiles_1024.png'), 1024, 1024, tiles(1024))
+png(os.path.join(HERE, 'textures', 'tiles_normal_1024.png'), 1024, 1024, tile_normals(1024))
 
 # A model of real size: three tori and a sphere, ~200k triangles, the texture wrapped once
 # around each; together they cover about a third of the picture.
@@ -92,7 +108,7 @@ trilinear = dict(material, filter="trilinear")
 write('bench_textured_model_trilinear', dict(base, version=2, objects=[dict(o, material=trilinear) for o in model]))
 
 pbr = {"shading": "pbr", "color": [1, 1, 1, 1], "texture": "textures/tiles_1024.png", "metallic": 0.8, "roughness": 0.9,
-       "metallic_roughness_texture": "textures/tiles_1024.png", "filter": "trilinear"}
+       "metallic_roughness_texture": "textures/tiles_1024.png", "normal_texture": "textures/tiles_normal_1024.png", "filter": "trilinear"}
 write('bench_pbr', dict(base, version=2, objects=[dict(o, material=pbr) for o in model],
                         lights={"ambient": [0.1, 0.1, 0.12], "directional": LIGHTS["directional"][:1],
                                 "point": [{"position": [1.8, 1.2, 2.0], "color": [0.5, 0.7, 1.0], "intensity": 4, "range": 8}],

@@ -218,9 +218,9 @@ private:
             mat.texture = texture(file.C_Str());
             break;
         }
-        if (m.GetTextureCount(aiTextureType_NORMALS) > 0) ignored_.insert("normal maps");
         if (mat.shading != Shading::Unlit && m.Get(AI_MATKEY_GLTF_ALPHAMODE, alpha_mode) == AI_SUCCESS) read_pbr(m, use);
         if (mat.shading != Shading::Pbr) {
+            if (m.GetTextureCount(aiTextureType_NORMALS) > 0) ignored_.insert("normal maps");
             if (m.GetTextureCount(aiTextureType_METALNESS) > 0 || m.GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS) > 0)
                 ignored_.insert("metallic-roughness maps");
             if (m.GetTextureCount(aiTextureType_LIGHTMAP) > 0 || m.GetTextureCount(aiTextureType_AMBIENT_OCCLUSION) > 0)
@@ -269,6 +269,12 @@ private:
                 mat.occlusion_strength = factor(strength_ao, 1.0f);
         }
         mat.emissive_texture = map(aiTextureType_EMISSIVE);
+        mat.normal_texture = map(aiTextureType_NORMALS);
+        if (mat.normal_texture) {
+            float scale = 1.0f;
+            m.Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), scale);
+            mat.normal_scale = std::isfinite(scale) ? std::clamp(scale, -1e6f, 1e6f) : 1.0f;
+        }
     }
 
     // A texture by the name the material gives: "*N" or a name assimp knows as embedded, else
@@ -387,6 +393,7 @@ private:
                 mesh->add_face_normal_triangle(shared[indices[t]], shared[indices[t + 1]], shared[indices[t + 2]]);
         } else if (corners == 3) {
             mesh->indices = std::move(indices);
+            if (in.HasTangentsAndBitangents()) read_tangents(in, *mesh);
         } else if (corners == 2) {
             mesh->lines = std::move(indices);
             out.primitive = Topology::Lines;
@@ -396,6 +403,20 @@ private:
         }
         out.mesh = std::move(mesh);
         return out;
+    }
+
+    // The file's tangents (glTF TANGENT), all of them usable, or none: the scene's own are
+    // generated where a normal map needs them (add_tangents). assimp gives the bitangent
+    // w · cross(N, T); its side of the tangent plane is w.
+    static void read_tangents(const aiMesh& in, Mesh& mesh) {
+        std::vector<TangentVertex> out(mesh.vertices.size());
+        for (size_t i = 0; i < out.size(); ++i) {
+            const glm::vec3 t(in.mTangents[i].x, in.mTangents[i].y, in.mTangents[i].z), b(in.mBitangents[i].x, in.mBitangents[i].y, in.mBitangents[i].z);
+            const glm::vec3 n = mesh.vertices[i].normal;
+            if (!finite(t) || !finite(b) || !(glm::dot(t, t) > 0.0f)) return;
+            out[i] = TangentVertex::of(mesh.vertices[i], glm::vec4(t, glm::dot(glm::cross(n, t), b) < 0.0f ? -1.0f : 1.0f));
+        }
+        mesh.tangent_vertices = std::move(out);
     }
 
     void place(const aiNode& node, const glm::mat4& parent) {
@@ -523,7 +544,9 @@ Model load_model(const fs::path& path, MissingTexture missing) {
     // Then polygons become triangles and each mesh is left with one primitive type.
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
     if (!scene) throw InputError(name + ": " + importer_error(importer));
-    return Loader(*scene, path, missing).load();
+    Model model = Loader(*scene, path, missing).load();
+    add_tangents(model.objects);
+    return model;
 }
 
 bool is_model_file(const fs::path& path) {

@@ -17,17 +17,27 @@ namespace softraster {
 template <Shading M>
 void record_surface_draw(Context& ctx, const SceneRenderer::Draw& d) {
     const std::span<const MeshVertex> vertices(d.mesh->vertices);
+    const std::span<const uint32_t> indices(d.mesh->indices);
     auto draw = [&]<bool Textured, bool Colored>() {
         const SurfaceShader<M, Textured, Colored> shader{&d.uniforms};
         if constexpr (M == Shading::Unlit) {
             if (d.primitive != Topology::Triangles) return ctx.draw(d.primitive, shader, vertices, *d.line_point_indices);
         }
-        ctx.draw_triangles(shader, vertices, std::span<const uint32_t>(d.mesh->indices));
+        ctx.draw_triangles(shader, vertices, indices);
     };
     if constexpr (M == Shading::Normals || M == Shading::Depth) {
         draw.template operator()<false, false>();
     } else {
         const SurfaceUniforms& u = d.uniforms;
+        if constexpr (M == Shading::Pbr) {
+            // A normal map: the vertices with their tangents (the scene loader made them).
+            if (u.normal_texture && d.mesh->tangent_vertices.size() == d.mesh->vertices.size()) {
+                const std::span<const TangentVertex> tangent_vertices(d.mesh->tangent_vertices);
+                if (d.colored) ctx.draw_triangles(SurfaceShader<M, true, true, true>{&u}, tangent_vertices, indices);
+                else ctx.draw_triangles(SurfaceShader<M, true, false, true>{&u}, tangent_vertices, indices);
+                return;
+            }
+        }
         const bool textured = u.texture != nullptr ||
                               (M == Shading::Pbr && (u.metallic_roughness_texture || u.occlusion_texture || u.emissive_texture));
         if (textured && d.colored) draw.template operator()<true, true>();
@@ -47,7 +57,7 @@ SOFTRASTER_SURFACE_MODELS(SOFTRASTER_DECLARE_SURFACE_DRAW)
 // draw_commands.h) are compiled once per count in surface_phases.cpp, not again in every
 // model's file whose shaders have that count. A count missing here still works, compiled
 // where it is used.
-#define SOFTRASTER_SURFACE_VARYING_COUNTS(X) X(1) X(3) X(4) X(6) X(7) X(9) X(10) X(12) X(13) X(16)
+#define SOFTRASTER_SURFACE_VARYING_COUNTS(X) X(1) X(3) X(4) X(6) X(7) X(9) X(10) X(12) X(13) X(16) X(20)
 #define SOFTRASTER_BIN_PHASE(S, N)                                                                                    \
     void phases::bin_triangles<S, N>(std::span<const uint32_t>, const ShadedVertex<N>*, const DrawTarget&, FaceState, \
                                      FlatVaryings, TriangleBin<N>&)

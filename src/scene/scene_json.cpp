@@ -383,7 +383,7 @@ struct Loader {
         n.expect_object({"shading", "color", "texture", "filter", "wrap", "specular", "shininess", "blend"},
                         {"color_mask", "alpha_cutoff", "alpha_to_coverage", "interpolation", "min_filter", "mag_filter",
                          "border_color", "metallic", "roughness", "emissive", "occlusion_strength", "metallic_roughness_texture",
-                         "occlusion_texture", "emissive_texture"},
+                         "occlusion_texture", "emissive_texture", "normal_texture", "normal_scale"},
                         version);
         if (n.has("shading"))
             m.shading = n["shading"].choice<Shading>({{"unlit", Shading::Unlit}, {"flat", Shading::Flat},
@@ -430,6 +430,11 @@ struct Loader {
         if (n.has("metallic_roughness_texture")) m.metallic_roughness_texture = read_texture(n["metallic_roughness_texture"]);
         if (n.has("occlusion_texture")) m.occlusion_texture = read_texture(n["occlusion_texture"]);
         if (n.has("emissive_texture")) m.emissive_texture = read_texture(n["emissive_texture"]);
+        if (n.has("normal_texture")) {
+            if (m.shading != Shading::Pbr) n["normal_texture"].fail("a normal map needs shading 'pbr'");
+            m.normal_texture = read_texture(n["normal_texture"]);
+        }
+        if (n.has("normal_scale")) m.normal_scale = float(n["normal_scale"].number_in(-1e6, 1e6, false, false, "-1e6..1e6"));
     }
 
     void read_depth(const Node& n, ObjectState& st) {
@@ -567,6 +572,7 @@ Scene load_scene(const std::filesystem::path& path) {
     if (top.has("lights")) loader.read_lights(top["lights"], scene.lights);
     const Node objects = top["objects"];
     for (size_t i = 0; i < objects.array_size(); ++i) loader.read_object(objects.at(i), scene.objects);
+    add_tangents(scene.objects);
     return scene;
 }
 

@@ -201,6 +201,8 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         u.metallic_roughness_texture = o.material.metallic_roughness_texture.get();
         u.occlusion_texture = o.material.occlusion_texture.get();
         u.emissive_texture = o.material.emissive_texture.get();
+        u.normal_texture = o.material.normal_texture.get();
+        u.normal_scale = o.material.normal_scale;
         if (d.shading == Shading::Flat) {
             d.flat_mesh = world_face_normal_mesh(*o.mesh, o.model);
             d.mesh = d.flat_mesh.get();

@@ -16,6 +16,11 @@ constexpr std::array kListedCounts{SOFTRASTER_SURFACE_VARYING_COUNTS(SOFTRASTER_
 template <Shading M>
 constexpr bool counts_listed() {
     auto listed = [](int n) { return std::find(kListedCounts.begin(), kListedCounts.end(), n) != kListedCounts.end(); };
+    if constexpr (M == Shading::Pbr) {  // (and with a normal map)
+        if (!listed(kVaryingCount<typename SurfaceShader<M, true, false, true>::Varyings>) ||
+            !listed(kVaryingCount<typename SurfaceShader<M, true, true, true>::Varyings>))
+            return false;
+    }
     return listed(kVaryingCount<typename SurfaceShader<M, false, false>::Varyings>) &&
            listed(kVaryingCount<typename SurfaceShader<M, true, false>::Varyings>) &&
            listed(kVaryingCount<typename SurfaceShader<M, false, true>::Varyings>) &&

@@ -199,6 +199,12 @@ expect_bad('missing occlusion map', v2('aomiss.json', {"material": {"shading": "
            ['objects[0].material.occlusion_texture', 'none.png'])
 expect_bad('emissive map not an image', v2('emmiss.json', {"material": {"shading": "pbr", "emissive_texture": "mrmiss.json"}}),
            ['objects[0].material.emissive_texture'])
+expect_bad('normal map in v1', v1_with('v1nm.json', {"material": {"normal_texture": "n.png"}}), ['objects[0].material.normal_texture', 'version 2 key'])
+expect_bad('normal map without pbr', v2('nmlam.json', {"material": {"shading": "lambert", "normal_texture": "n.png"}}),
+           ['objects[0].material.normal_texture', "needs shading 'pbr'"])
+expect_bad('missing normal map', v2('nmmiss.json', {"material": {"shading": "pbr", "normal_texture": "gone.png"}}),
+           ['objects[0].material.normal_texture', 'gone.png'])
+expect_bad('normal_scale not a number', v2('nms.json', {"material": {"shading": "pbr", "normal_scale": "big"}}), ['objects[0].material.normal_scale'])
 expect_bad('v2 key in v1 (primitive)', v1_with('v1prim.json', {"primitive": "lines"}), ['objects[0].primitive', 'version 2'])
 expect_bad('unknown primitive', v2('v2prim.json', {"primitive": "quads"}), ['objects[0].primitive', "unknown value 'quads'"])
 expect_bad('line_width 0.5', v2('v2lw.json', {"line_width": 0.5}), ['objects[0].line_width', 'out of range'])

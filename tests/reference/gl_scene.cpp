@@ -46,6 +46,7 @@ layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
 layout(location = 3) in vec4 a_color;
+layout(location = 4) in vec4 a_tangent;
 uniform mat4 u_mvp;
 uniform mat4 u_model;
 uniform mat3 u_normal_matrix;
@@ -57,9 +58,15 @@ INTERP out vec3 v_normal;
 INTERP out vec2 v_uv;
 INTERP out vec4 v_color;
 INTERP out vec3 v_intensity;
+#if NORMAL_MAP
+INTERP out vec4 v_tangent;
+#endif
 void main() {
     v_world = (u_model * vec4(a_pos, 1.0)).xyz;
     v_normal = u_normal_matrix * a_normal;
+#if NORMAL_MAP
+    v_tangent = vec4(mat3(u_model) * a_tangent.xyz, a_tangent.w);
+#endif
     v_uv = a_uv;
     v_color = a_color;
     v_intensity = u_ambient;
@@ -87,6 +94,11 @@ INTERP in vec3 v_normal;
 INTERP in vec2 v_uv;
 INTERP in vec4 v_color;
 INTERP in vec3 v_intensity;
+#if NORMAL_MAP
+INTERP in vec4 v_tangent;
+uniform sampler2D u_normal_texture;
+uniform float u_normal_scale;
+#endif
 // SHADING: 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth, 7 phong, 8 pbr
 uniform sampler2D u_texture;
 uniform vec4 u_color;
@@ -159,6 +171,13 @@ void main() {
     float a = max(0.03, roughness) * max(0.03, roughness), a2 = a * a;
     vec3 c_diff = base.rgb * (1.0 - metallic), f0 = mix(vec3(0.04), base.rgb, metallic);
     vec3 n = normalize(v_normal), v = normalize(u_eye - v_world);
+#if NORMAL_MAP
+    // MikkTSpace's pixel-shader form: N and T as interpolated, B = w cross(N, T).
+    vec3 m = texture(u_normal_texture, v_uv).rgb * 2.0 - 1.0;
+    m.xy *= u_normal_scale;
+    vec3 b = v_tangent.w * cross(v_normal, v_tangent.xyz);
+    n = normalize(m.x * v_tangent.xyz + m.y * b + m.z * v_normal);
+#endif
     float nv = max(0.0, dot(n, v));
     vec3 rgb = u_ambient * c_diff * occlusion;
     for (int i = 0; i < LIGHTS; ++i) rgb += u_light_color[i] * pbr_light(c_diff, f0, a2, n, v, u_to_light[i], nv);
@@ -288,7 +307,7 @@ struct GlScene::Draw {
     glm::vec4 color{1.0f};
     GLuint program = 0;
     GLuint vao = 0, vbo = 0, ibo = 0, texture = 0;
-    GLuint maps[3] = {0, 0, 0};  // pbr: metallic-roughness, occlusion, emissive (units 1 to 3)
+    GLuint maps[4] = {0, 0, 0, 0};  // pbr: metallic-roughness, occlusion, emissive, normal (units 1 to 4)
     GLsizei index_count = 0;
     const softraster::SceneObject* object = nullptr;
     glm::mat4 mvp{1.0f}, model{1.0f};
@@ -306,13 +325,20 @@ struct GlScene::Draw {
 namespace {
 // Uploads `mesh` and the primitives of `indices` (`per` indices each) whose vertices are all
 // finite (GL leaves the others undefined). Without vertex colors: a constant white.
-void upload(GlScene::Draw& d, const softraster::Mesh& mesh, const std::vector<uint32_t>& indices, size_t per, bool vertex_colors) {
+// Tangents: the mesh's tangent vertices, with the tangent as attribute 4.
+void upload(GlScene::Draw& d, const softraster::Mesh& mesh, const std::vector<uint32_t>& indices, size_t per, bool vertex_colors,
+            bool tangents = false) {
     glGenVertexArrays(1, &d.vao);
     glBindVertexArray(d.vao);
     glGenBuffers(1, &d.vbo);
     glBindBuffer(GL_ARRAY_BUFFER, d.vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(softraster::MeshVertex)), mesh.vertices.data(), GL_STATIC_DRAW);
-    const GLsizei stride = sizeof(softraster::MeshVertex);
+    const GLsizei stride = tangents ? sizeof(softraster::TangentVertex) : sizeof(softraster::MeshVertex);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * size_t(stride)),
+                 tangents ? static_cast<const void*>(mesh.tangent_vertices.data()) : mesh.vertices.data(), GL_STATIC_DRAW);
+    if (tangents) {
+        glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::TangentVertex, tangent)));
+        glEnableVertexAttribArray(4);
+    }
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, position)));
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, normal)));
     glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(softraster::MeshVertex, uv)));
@@ -348,21 +374,27 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
         if (!p) p = link_program(maps, shading, textured, lights, int(scene.lights.punctual.size()), cutoff, affine);
         return p;
     };
-    auto upload_texture = [&](const softraster::Texture* t) {
+    // Wide: as 16-bit texels holding the same values (v · 257 / 65535 = v / 255). llvmpipe
+    // filters 8-bit textures in 8-bit arithmetic, so a filtered lookup comes back rounded to
+    // 1/255; the spec's filter (and softraster's) is exact. Colors do not show the
+    // difference, normal maps do (lighting magnifies a normal's error), so they go wide.
+    auto upload_texture = [&](const softraster::Texture* t, bool wide = false) {
         GLuint& tex = textures[t];
         if (!tex) {
             // Texel row 0 is the bottom of the picture: what GL calls t = 0.
-            std::vector<uint8_t> bytes(size_t(t->width()) * size_t(t->height()) * 4);
+            std::vector<uint16_t> texels(size_t(t->width()) * size_t(t->height()) * 4);
             for (int j = 0; j < t->height(); ++j)
                 for (int i = 0; i < t->width(); ++i) {
                     const glm::vec4 c = t->texel(i, j);
                     for (int k = 0; k < 4; ++k)
-                        bytes[(size_t(j) * size_t(t->width()) + size_t(i)) * 4 + size_t(k)] = uint8_t(std::lround(c[k] * 255.0f));
+                        texels[(size_t(j) * size_t(t->width()) + size_t(i)) * 4 + size_t(k)] = uint16_t(std::lround(c[k] * 255.0f) * (wide ? 257 : 1));
                 }
+            std::vector<uint8_t> bytes(texels.begin(), texels.end());
             glGenTextures(1, &tex);
             glBindTexture(GL_TEXTURE_2D, tex);
             glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t->width(), t->height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+            if (wide) glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16, t->width(), t->height(), 0, GL_RGBA, GL_UNSIGNED_SHORT, texels.data());
+            else glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t->width(), t->height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
             glGenerateMipmap(GL_TEXTURE_2D);  // GL's own chain, not softraster's
         }
         return tex;
@@ -377,12 +409,13 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
         const bool cutoff = o.material.alpha_cutoff.has_value();
         const softraster::Material& mat = o.material;
         const bool pbr = shading == int(Shading::Pbr);
-        const softraster::Texture* maps[3] = {pbr ? mat.metallic_roughness_texture.get() : nullptr, pbr ? mat.occlusion_texture.get() : nullptr,
-                                              pbr ? mat.emissive_texture.get() : nullptr};
+        const softraster::Texture* maps[4] = {pbr ? mat.metallic_roughness_texture.get() : nullptr, pbr ? mat.occlusion_texture.get() : nullptr,
+                                              pbr ? mat.emissive_texture.get() : nullptr, pbr ? mat.normal_texture.get() : nullptr};
         const std::string map_defines = std::string("#define MR_MAP ") + (maps[0] ? "1" : "0") + "\n#define OCCLUSION_MAP " +
-                                        (maps[1] ? "1" : "0") + "\n#define EMISSIVE_MAP " + (maps[2] ? "1" : "0") + "\n";
-        for (int k = 0; k < 3; ++k)
-            if (maps[k]) d->maps[k] = upload_texture(maps[k]);
+                                        (maps[1] ? "1" : "0") + "\n#define EMISSIVE_MAP " + (maps[2] ? "1" : "0") +
+                                        "\n#define NORMAL_MAP " + (maps[3] ? "1" : "0") + "\n";
+        for (int k = 0; k < 4; ++k)
+            if (maps[k]) d->maps[k] = upload_texture(maps[k], /*wide=*/k == 3);
         d->program = program(shading, mat.texture != nullptr, int(scene.lights.directional.size()), cutoff, mat.affine, map_defines);
         d->model = o.model;
         d->mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
@@ -404,7 +437,7 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
         }
         d->view_depth = lo.x <= hi.x ? (view * o.model * glm::vec4(0.5f * (lo + hi), 1.0f)).z : 0.0f;
         upload(*d, *mesh, indices, o.primitive == softraster::Topology::Triangles ? 3 : o.primitive == softraster::Topology::Lines ? 2 : 1,
-               /*vertex_colors=*/true);
+               /*vertex_colors=*/true, /*tangents=*/maps[3] != nullptr);
 
         if (const softraster::Texture* t = o.material.texture.get()) d->texture = upload_texture(t);
         // A wireframe: the triangles pushed back by glPolygonOffset(+1, +1), then their edges
@@ -491,7 +524,9 @@ void GlScene::draw_frame() const {
         glUniform1i(loc("u_mr_texture"), 1);
         glUniform1i(loc("u_occlusion_texture"), 2);
         glUniform1i(loc("u_emissive_texture"), 3);
-        for (int unit = 0; unit < 4; ++unit) {
+        glUniform1i(loc("u_normal_texture"), 4);
+        glUniform1f(loc("u_normal_scale"), m.normal_scale);
+        for (int unit = 0; unit < 5; ++unit) {
             const GLuint tex = unit == 0 ? d->texture : d->maps[unit - 1];
             if (!tex || d->wire) continue;
             glActiveTexture(GLenum(GL_TEXTURE0 + unit));

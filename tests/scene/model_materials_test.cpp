@@ -55,3 +55,27 @@ TEST(ModelMaterials, GltfLightsArePlacedByTheirNodes) {
     EXPECT_EQ(s.lights.punctual.size(), 2u);
     EXPECT_EQ(s.lights.directional.size(), 1u);
 }
+
+// tests/scenes/models/normal_mapped.gltf: a floor with a normal map and no tangents, a cube
+// with a scaled normal map and TANGENT along each face's v axis.
+TEST(ModelMaterials, GltfNormalMapsTheirScaleAndTheFilesTangents) {
+    const Model m = load_model(std::string(SOFTRASTER_TEST_DATA) + "/scenes/models/normal_mapped.gltf");
+    ASSERT_EQ(m.objects.size(), 2u);
+    const SceneObject &floor = m.objects[0], &cube = m.objects[1];
+    ASSERT_TRUE(floor.material.normal_texture != nullptr);
+    EXPECT_FLOAT_EQ(floor.material.normal_scale, 1.0f);
+    EXPECT_FLOAT_EQ(cube.material.normal_scale, 0.7f);
+    // The floor's are generated: along +u, which the file's uv runs along +x.
+    ASSERT_EQ(floor.mesh->tangent_vertices.size(), floor.mesh->vertices.size());
+    for (const TangentVertex& v : floor.mesh->tangent_vertices) {
+        EXPECT_NEAR(v.tangent.x, 1.0f, 1e-6f);
+        EXPECT_EQ(v.tangent.w, 1.0f);
+    }
+    // The cube's are the file's: perpendicular to what generation would give (along u).
+    ASSERT_EQ(cube.mesh->tangent_vertices.size(), cube.mesh->vertices.size());
+    for (size_t i = 0; i + 3 < cube.mesh->vertices.size(); i += 4) {
+        const glm::vec3 t(cube.mesh->tangent_vertices[i].tangent);
+        const glm::vec3 along_v = cube.mesh->vertices[i + 3].position - cube.mesh->vertices[i].position;
+        EXPECT_NEAR(glm::dot(t, glm::normalize(along_v)), 1.0f, 1e-5f) << "face " << i / 4;
+    }
+}

@@ -294,7 +294,38 @@ def make_pbr_lights():
     write('models/pbr_lights.gltf', g.gltf())
 
 
+def make_normal_mapped():
+    """glTF normal maps (normalTexture with a scale): a floor without TANGENT (softraster
+    generates its tangents) and a cube whose TANGENT attribute runs along v instead of u,
+    so the file's tangents, not generated ones, decide how its bumps are lit."""
+    from make_normal_map_scenes import bump
+    g = Gltf()
+    bumps = png(128, 128, [c for y in range(128) for x in range(128) for c in bump(x, y)[:3]], 3)
+    nmap = g.texture(bumps, 'uri')
+    floor = g.material(pbrMetallicRoughness={"baseColorFactor": [0.75, 0.72, 0.7, 1], "metallicFactor": 0.0, "roughnessFactor": 0.6},
+                       normalTexture={"index": nmap})
+    box = g.material(pbrMetallicRoughness={"baseColorFactor": [0.4, 0.6, 0.85, 1], "metallicFactor": 0.0, "roughnessFactor": 0.55},
+                     normalTexture={"index": nmap, "scale": 0.7})
+    fp = [[-2, 0, 2], [2, 0, 2], [2, 0, -2], [-2, 0, -2]]
+    g.node(mesh=g.mesh([{"attributes": {"POSITION": g.accessor(fp), "NORMAL": g.accessor([[0, 1, 0]] * 4),
+                                        "TEXCOORD_0": g.accessor([[0, 2], [2, 2], [2, 0], [0, 0]])},
+                         "indices": g.accessor([0, 1, 2, 0, 2, 3], 5123), "material": floor}]))
+    pos, nrm, uv, idx = cube()
+    # Each face's v axis (the corner order of cube() runs u first, then v), w = +1.
+    tangents = []
+    for f in range(6):
+        p0, p3 = pos[4 * f], pos[4 * f + 3]
+        v = [p3[i] - p0[i] for i in range(3)]
+        tangents += [v + [1.0]] * 4
+    g.node(mesh=g.mesh([{"attributes": {"POSITION": g.accessor(pos), "NORMAL": g.accessor(nrm), "TEXCOORD_0": g.accessor(uv),
+                                        "TANGENT": g.accessor(tangents)},
+                         "indices": g.accessor(idx, 5123), "material": box}]), translation=[0, 0.6, 0],
+           rotation=[0, 0.3827, 0, 0.9239])
+    write('models/normal_mapped.gltf', g.gltf())
+
+
 def main():
+    make_normal_mapped()
     make_pbr_lights()
     make_instanced()
     make_textured_glb()
@@ -314,6 +345,8 @@ def main():
     scene('model_obj_mtl', [{"model": "models/materials.obj"}], eye=(0.3, 0.4, 3.6))
     # (A model object is lit by the scene's lights; `render MODEL` uses the file's.)
     scene('model_pbr_maps', [{"model": "models/pbr_lights.gltf"}], eye=(0.5, 2.4, 3.6), target=(0, 0.3, 0))
+    scene('model_normal_maps', [{"model": "models/normal_mapped.gltf"}], eye=(1.2, 1.6, 3.0), target=(0, 0.3, 0),
+          width=192, height=128)
     # Models of Debian's assimp-testmodels, in place.
     scene('model_box_textured', [{"model": CORPUS + "/glTF2/BoxTextured-glTF/BoxTextured.gltf"}], eye=(1.6, 1.3, 2.2))
     scene('model_engine_glb', [{"model": CORPUS + "/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"}],

@@ -20,11 +20,27 @@ struct MeshVertex {
     glm::vec4 color{1.0f};              // missing vertex colors: white
 };
 
+// A vertex of a normal-mapped mesh: its tangent along +u in xyz, and in w the sign (+1 or
+// -1) that makes the bitangent, along +v, w · cross(normal, tangent) (glTF's TANGENT).
+// (The same members as MeshVertex, then the tangent: a plain struct, for vertex buffers.)
+struct TangentVertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    glm::vec2 uv{0.0f};
+    glm::vec4 color{1.0f};
+    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};
+
+    static TangentVertex of(const MeshVertex& v, const glm::vec4& tangent) { return {v.position, v.normal, v.uv, v.color, tangent}; }
+};
+
 struct Mesh {
     std::vector<MeshVertex> vertices;
     std::vector<uint32_t> indices;  // three per triangle
     std::vector<uint32_t> lines;    // two per segment (OBJ `l` elements)
     std::vector<uint32_t> points;   // one per point (OBJ `p` elements)
+    // The vertices again with their tangents, for normal-mapped materials only (a mesh drawn
+    // without a normal map does not carry them): empty, or one per vertex.
+    std::vector<TangentVertex> tangent_vertices;
 
     size_t triangle_count() const { return indices.size() / 3; }
     // Appends triangle (a, b, c) with fresh corners that all carry its face normal
@@ -38,6 +54,11 @@ std::vector<uint32_t> triangle_edges(const Mesh& mesh);
 // What an object drawn as `primitive` draws: its triangles; its lines, or if it has none the
 // edges of its triangles; its points, or if it has none every vertex.
 std::vector<uint32_t> primitive_indices(const Mesh& mesh, Topology primitive);
+
+// Fills mesh.tangent_vertices from the positions, normals and texture coordinates
+// (docs/scene-format.md "Normal maps": per triangle, the direction of +u projected into
+// each corner's tangent plane, weighted by the corner's angle).
+void generate_tangents(Mesh& mesh);
 
 // Loaders. Each throws InputError("<path>:<line>: <what>") for a file it cannot use.
 Mesh load_obj(const std::filesystem::path& path);

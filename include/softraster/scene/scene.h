@@ -42,6 +42,8 @@ struct Material {
     std::shared_ptr<const Texture> metallic_roughness_texture;  // roughness from G, metallic from B
     std::shared_ptr<const Texture> occlusion_texture;           // R
     std::shared_ptr<const Texture> emissive_texture;            // RGB
+    std::shared_ptr<const Texture> normal_texture;              // tangent-space normals (normal_mapping.h)
+    float normal_scale = 1.0f;                                  // multiplies the map's x and y
 };
 
 // An object's per-fragment state (version 2; version 1 objects have the defaults).
@@ -128,6 +130,10 @@ glm::mat4 projection_matrix(const Camera& c, int width, int height);
 // Reads and validates a scene file; meshes and textures are resolved relative to it.
 // Throws InputError with one line naming the file and the JSON path or line.
 Scene load_scene(const std::filesystem::path& path);
+
+// Gives each object with a normal map a mesh with tangents (generate_tangents in mesh.h)
+// where its mesh has none; objects that share a mesh share the copy.
+void add_tangents(std::vector<SceneObject>& objects);
 
 // The built-in showcase scene (needs no files).
 Scene showcase_scene();

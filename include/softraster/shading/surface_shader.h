@@ -16,6 +16,7 @@
 #include "softraster/scene/mesh.h"
 #include "softraster/scene/scene.h"
 #include "softraster/shading/lighting.h"
+#include "softraster/shading/normal_mapping.h"
 #include "softraster/shading/pbr.h"
 #include "softraster/shading/surface_uniforms.h"
 #include "softraster/shading/texture.h"
@@ -29,7 +30,7 @@ struct NoVarying {};
 template <bool Present, class T, int Tag>
 using MaybeVarying = std::conditional_t<Present, T, NoVarying<Tag>>;
 
-template <Shading M, bool Textured, bool Colored>
+template <Shading M, bool Textured, bool Colored, bool NormalMapped = false>
 struct SurfaceVaryings {
     static constexpr bool kSpecular = M == Shading::BlinnPhong || M == Shading::Phong;
     static constexpr bool kPbr = M == Shading::Pbr;
@@ -37,6 +38,8 @@ struct SurfaceVaryings {
     static constexpr bool kBase = M != Shading::Normals && M != Shading::Depth;  // reads color and texture
     static constexpr bool kWorld = kSpecular || kPbr;
     static constexpr bool kNormal = kLit || M == Shading::Normals;
+    static constexpr bool kTangent = NormalMapped;  // pbr with a normal map
+    static_assert(!NormalMapped || (kPbr && Textured), "normal maps are read by textured pbr shaders");
     static constexpr bool kIntensity = M == Shading::Gouraud;
     static constexpr bool kUv = kBase && Textured;
     static constexpr bool kColor = kBase && Colored;
@@ -44,6 +47,7 @@ struct SurfaceVaryings {
 
     [[no_unique_address]] MaybeVarying<kWorld, glm::vec3, 0> world;          // world-space position P
     [[no_unique_address]] MaybeVarying<kNormal, glm::vec3, 1> normal;        // world-space normal
+    [[no_unique_address]] MaybeVarying<kTangent, glm::vec4, 7> tangent;      // world-space tangent, w the bitangent's sign
     [[no_unique_address]] MaybeVarying<kIntensity, glm::vec3, 2> intensity;  // Gouraud: lighting at the vertex
     [[no_unique_address]] MaybeVarying<kUv, glm::vec2, 3> uv;
     [[no_unique_address]] MaybeVarying<kUv, glm::vec4, 6> uv_derivatives;  // d(u, v)/dx, d(u, v)/dy: filled per pixel
@@ -53,7 +57,8 @@ struct SurfaceVaryings {
     // Where each present varying starts among the struct's floats (empty ones take none).
     static constexpr int kWorldAt = 0;
     static constexpr int kNormalAt = kWorldAt + 3 * kWorld;
-    static constexpr int kIntensityAt = kNormalAt + 3 * kNormal;
+    static constexpr int kTangentAt = kNormalAt + 3 * kNormal;
+    static constexpr int kIntensityAt = kTangentAt + 4 * kTangent;
     static constexpr int kUvAt = kIntensityAt + 3 * kIntensity;
     static constexpr int kUvDerivativesAt = kUvAt + 2 * kUv;
     static constexpr int kColorAt = kUvDerivativesAt + 4 * kUv;
@@ -61,11 +66,11 @@ struct SurfaceVaryings {
 };
 
 // Colored: the mesh has vertex colors other than white (otherwise the term is 1 and is
-// not interpolated at all).
-template <Shading Model, bool Textured, bool Colored = true>
+// not interpolated at all). NormalMapped: pbr with a normal map, whose vertices carry tangents.
+template <Shading Model, bool Textured, bool Colored = true, bool NormalMapped = false>
 struct SurfaceShader {
-    using Vertex = MeshVertex;
-    using Varyings = SurfaceVaryings<Model, Textured, Colored>;
+    using Vertex = std::conditional_t<NormalMapped, TangentVertex, MeshVertex>;
+    using Varyings = SurfaceVaryings<Model, Textured, Colored, NormalMapped>;
     static constexpr bool kPure = true;  // never discards, no side effects
     static constexpr bool kVaryingsOnly = Model != Shading::Depth;  // (depth reads the fragment's z)
     // A texture's level of detail needs the derivatives of uv (shader.h).
@@ -75,9 +80,11 @@ struct SurfaceShader {
     static constexpr Specular kSpecularModel = Model == Shading::Phong ? Specular::Phong : Specular::BlinnPhong;
     const SurfaceUniforms* u;
 
-    glm::vec4 vertex(const MeshVertex& in, Varyings& out) const {
+    glm::vec4 vertex(const Vertex& in, Varyings& out) const {
         if constexpr (Varyings::kWorld) out.world = glm::vec3(u->model * glm::vec4(in.position, 1.0f));
         if constexpr (Varyings::kNormal) out.normal = u->normal_matrix * in.normal;
+        // A tangent lies in the surface, so it moves with the model matrix itself.
+        if constexpr (Varyings::kTangent) out.tangent = glm::vec4(glm::mat3(u->model) * glm::vec3(in.tangent), in.tangent.w);
         if constexpr (Varyings::kIntensity) {
             const glm::vec3 n = glm::normalize(u->normal_matrix * in.normal);
             out.intensity = diffuse_intensity(u->lights, n);
@@ -149,7 +156,13 @@ struct SurfaceShader {
             if (u->emissive_texture) emissive *= glm::vec3(u->emissive_texture->sample(in.uv, d, u->sampler));
         }
         const PbrSurface s = pbr_surface(glm::vec3(base), metallic, std::max(kMinRoughness, roughness));
-        const glm::vec3 n = glm::normalize(in.normal), v = glm::normalize(u->eye - in.world);
+        glm::vec3 n = glm::normalize(in.normal);
+        if constexpr (Varyings::kTangent) {
+            const glm::vec4 dv = in.uv_derivatives;
+            const glm::vec4 m = u->normal_texture->sample(in.uv, UvDerivatives{dv.x, dv.y, dv.z, dv.w}, u->sampler);
+            n = mapped_normal(in.normal, in.tangent, glm::vec3(m), u->normal_scale);
+        }
+        const glm::vec3 v = glm::normalize(u->eye - in.world);
         const float nv = std::max(0.0f, glm::dot(n, v));
         glm::vec3 rgb = u->lights.ambient * s.diffuse * occlusion;
         for (int i = 0; i < u->lights.count; ++i) rgb += u->lights.color[size_t(i)] * pbr_light(s, n, v, u->lights.to_light[size_t(i)], nv);
@@ -184,7 +197,14 @@ struct SurfaceShader {
             }
         }
         const PbrSurface8 s = pbr_surface(vec3x8{base[0], base[1], base[2]}, metallic, max(splat(kMinRoughness), roughness));
-        const vec3x8 n = normalize(vec3x8{in[Varyings::kNormalAt], in[Varyings::kNormalAt + 1], in[Varyings::kNormalAt + 2]});
+        const vec3x8 normal{in[Varyings::kNormalAt], in[Varyings::kNormalAt + 1], in[Varyings::kNormalAt + 2]};
+        vec3x8 n = normalize(normal);
+        if constexpr (Varyings::kTangent) {
+            constexpr size_t d = Varyings::kUvDerivativesAt, t = Varyings::kTangentAt;
+            std::array<f8, 4> m;
+            u->normal_texture->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], {in[d], in[d + 1], in[d + 2], in[d + 3]}, u->sampler, m);
+            n = mapped_normal(normal, {in[t], in[t + 1], in[t + 2]}, in[t + 3], {m[0], m[1], m[2]}, u->normal_scale);
+        }
         const vec3x8 p{in[Varyings::kWorldAt], in[Varyings::kWorldAt + 1], in[Varyings::kWorldAt + 2]};
         const vec3x8 v = normalize({u->eye.x - p.x, u->eye.y - p.y, u->eye.z - p.z});
         const f8 nv = max(splat(0.0f), dot(n, v));

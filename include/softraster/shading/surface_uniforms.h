@@ -31,6 +31,8 @@ struct SurfaceUniforms {
     const Texture* metallic_roughness_texture = nullptr;
     const Texture* occlusion_texture = nullptr;
     const Texture* emissive_texture = nullptr;
+    const Texture* normal_texture = nullptr;  // with it the draw's mesh carries tangents (normal_mapping.h)
+    float normal_scale = 1.0f;
 };
 
 }  // namespace softraster
