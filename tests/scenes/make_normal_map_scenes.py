@@ -30,7 +30,7 @@ def bump(x, y, cell=32):
 
 def ridge(x, y):
     """Ridges along v: the normal tilts back and forth in x."""
-    a = 0.8 * math.sin(2 * math.pi * (x + 0.5) / 32)
+    a = 0.8 * math.sin(2 * math.pi * (x + 0.5) / 8)
     return encode((a / math.sqrt(1 + a * a), 0, 1 / math.sqrt(1 + a * a)))
 
 
