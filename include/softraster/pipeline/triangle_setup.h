@@ -79,13 +79,14 @@ struct TriangleSetup {
     // Interpolation planes, made by setup_planes. A draw may make them only once the triangle
     // is known to cover a sample: in a million-triangle mesh many triangles cover none.
     bool has_planes = false;
+    // Every varying has the same value at the three corners (or is flat): then var_w holds
+    // the values themselves as constant planes, and interpolation returns them exactly.
+    // (Beside has_planes, in its padding: the struct keeps its size.)
+    bool constant_varyings = false;
     PlaneOptions options;        // set per draw, before setup_coverage
     DepthPlane z;                // window depth
     Plane inv_w;                 // 1/w
     std::array<Plane, N> var_w;  // varying / w
-    // Every varying has the same value at the three corners (or is flat): then var_w holds
-    // the values themselves as constant planes, and interpolation returns them exactly.
-    bool constant_varyings = false;
 
     int64_t edge(int i, int64_t px, int64_t py) const {
         return A[size_t(i)] * px + B[size_t(i)] * py + C[size_t(i)];
