@@ -9,12 +9,20 @@
 #include <span>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "softraster/context.h"
 
 namespace softraster::test {
+
+// Each component of a within eps of b's.
+inline void expect_near(const glm::vec3& a, const glm::vec3& b, float eps) {
+    EXPECT_NEAR(a.x, b.x, eps);
+    EXPECT_NEAR(a.y, b.y, eps);
+    EXPECT_NEAR(a.z, b.z, eps);
+}
 
 // Vertex = clip-space position + one scalar attribute; the fragment color is a constant.
 struct ClipVertexIn {

@@ -7,15 +7,12 @@
 #include "softraster/scene/builtin_meshes.h"
 #include "softraster/scene/scene.h"
 #include "softraster/shading/texture.h"
+#include "test_support.h"
 
 using namespace softraster;
 
 namespace {
-void expect_near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) {
-    EXPECT_NEAR(a.x, b.x, eps);
-    EXPECT_NEAR(a.y, b.y, eps);
-    EXPECT_NEAR(a.z, b.z, eps);
-}
+void expect_near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-5f) { test::expect_near(a, b, eps); }
 }  // namespace
 
 TEST(MeshTangents, PlaneTangentIsPlusXAndBitangentPlusV) {

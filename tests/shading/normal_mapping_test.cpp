@@ -7,15 +7,12 @@
 #include <glm/geometric.hpp>
 
 #include "softraster/shading/normal_mapping.h"
+#include "test_support.h"
 
 using namespace softraster;
 
 namespace {
-void expect_near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-6f) {
-    EXPECT_NEAR(a.x, b.x, eps);
-    EXPECT_NEAR(a.y, b.y, eps);
-    EXPECT_NEAR(a.z, b.z, eps);
-}
+void expect_near(const glm::vec3& a, const glm::vec3& b, float eps = 1e-6f) { test::expect_near(a, b, eps); }
 const glm::vec3 kN(0, 0, 2), kT(3, 0, 0);  // interpolated: not unit length
 }  // namespace
 
