@@ -5,6 +5,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "softraster/pipeline/interpolation.h"
+#include "softraster/pipeline/vertex_processing.h"
 #include "test_support.h"
 
 using namespace softraster;
@@ -63,27 +65,32 @@ TEST(Interpolation, DepthIsAffineInWindowSpace) {
 }
 
 // A varying with the same value at every corner is that value at every pixel, exactly, in
-// perspective too: setup keeps the value instead of dividing a/w by 1/w (triangle_setup.h).
+// perspective too, when the draw's planes look for constant varyings: setup keeps the value
+// instead of dividing a/w by 1/w (setup_planes). Without looking, the division rounds.
 TEST(Interpolation, ConstantVaryingsAreExact) {
     constexpr int W = 97, H = 61;
     const glm::mat4 proj = glm::perspective(glm::radians(70.0f), float(W) / H, 0.3f, 40.0f);
     const float value = 0.7123f;  // (0.7123 * 1/w) / (1/w) rounds away from it at some pixels
-    const glm::vec3 p[4] = {{-3, -1, -1}, {3, -1, -1}, {3, 4, -30}, {-3, 4, -30}};
-    std::vector<ClipVertexIn> v;
-    for (const glm::vec3& q : p) v.push_back({proj * glm::vec4(q, 1.0f), value});
-    std::vector<float> values(size_t(W) * H, NAN);
-    Framebuffer fb(W, H);
-    Context ctx(fb);
-    ctx.clear(glm::vec4(0));
-    ctx.state.cull = CullMode::None;
-    draw(ctx, CaptureShader{&values, W}, v, {0, 1, 2, 0, 2, 3});
-    int covered = 0;
-    for (float got : values) {
-        if (std::isnan(got)) continue;
-        ASSERT_EQ(got, value);
-        ++covered;
-    }
-    EXPECT_GT(covered, 1000);
+    const glm::vec3 p[3] = {{-3, -1, -1}, {3, -1, -1}, {3, 4, -30}};
+    std::array<ShadedVertex<1>, 3> v;
+    for (size_t k = 0; k < 3; ++k)
+        ASSERT_TRUE(finish_vertex(ClipVertex<1>{proj * glm::vec4(p[k], 1.0f), {value}}, Viewport{W, H}, v[k]));
+    const Rect rect{0, 0, W, H};
+    TriangleSetup<1> exact, divided;
+    ASSERT_TRUE(setup_coverage<1>(v[0], v[1], v[2], FrontFace::CCW, rect, exact));
+    ASSERT_TRUE(setup_coverage<1>(v[0], v[1], v[2], FrontFace::CCW, rect, divided));
+    setup_planes</*Flat=*/0, /*Constant=*/true>(exact);
+    setup_planes</*Flat=*/0, /*Constant=*/false>(divided);
+    EXPECT_TRUE(exact.constant_varyings);
+    EXPECT_FALSE(divided.constant_varyings);
+    int rounded = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const float i = float(x), j = float(y);
+            ASSERT_EQ((interpolate_perspective<0, true>(exact, i, j)[0]), value) << x << "," << y;
+            if (interpolate_perspective<0, false>(divided, i, j)[0] != value) ++rounded;
+        }
+    EXPECT_GT(rounded, 0);  // the test can tell the two apart
 }
 
 namespace {

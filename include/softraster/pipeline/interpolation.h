@@ -21,13 +21,16 @@ inline T interpolate_depth(const TriangleSetup<N>& t, T i, T j) {
 
 // Flat: the shader's flat varyings (shader.h), whose planes hold the provoking vertex's
 // value (setup_planes) and are not interpolated.
-// A triangle with constant varyings (setup_planes) has constant planes: each gives its value.
-template <uint64_t Flat, int N, class T>
+// Constant: the draw's planes were made looking for constant varyings (setup_planes); a
+// triangle that has them has constant planes, each giving its value.
+template <uint64_t Flat, bool Constant = false, int N, class T>
 inline std::array<T, N> interpolate_perspective(const TriangleSetup<N>& t, T i, T j) {
     std::array<T, N> out;
-    if (t.constant_varyings) {
-        for (size_t k = 0; k < size_t(N); ++k) out[k] = t.var_w[k].at(i, j);  // a0 + 0 i + 0 j: exactly a0
-        return out;
+    if constexpr (Constant) {
+        if (t.constant_varyings) {
+            for (size_t k = 0; k < size_t(N); ++k) out[k] = t.var_w[k].at(i, j);  // a0 + 0 i + 0 j: exactly a0
+            return out;
+        }
     }
     const T w = 1.0f / t.inv_w.at(i, j);
     for (size_t k = 0; k < size_t(N); ++k) {
@@ -47,13 +50,14 @@ inline simd::f8 odd(int origin, simd::f8 i) { return simd::to_float((simd::splat
 // quad's top-left pixel, as llvmpipe takes them:
 //   da/dx = a(x0 + 1, y0) - a(x0, y0),   da/dy = a(x0, y0 + 1) - a(x0, y0),
 // each a perspective-correct as above, whether or not those pixels are covered.
-template <class S, int N, class T>
+template <class S, bool Constant = false, int N, class T>
 inline std::array<T, N> interpolate_varyings(const TriangleSetup<N>& t, T i, T j) {
-    std::array<T, N> out = interpolate_perspective<kFlatVaryings<S>>(t, i, j);
+    std::array<T, N> out = interpolate_perspective<kFlatVaryings<S>, Constant>(t, i, j);
     if constexpr (DerivativeShader<S>) {
         constexpr size_t a = size_t(S::kDerivativeOf), at = size_t(S::kDerivativeAt);
         static_assert(((kFlatVaryings<S> >> at) & 15) == 15, "the derivatives' floats are flat varyings");
-        if (t.constant_varyings) return out;  // (they stay 0)
+        if constexpr (Constant)
+            if (t.constant_varyings) return out;  // (they stay 0)
         const T i0 = i - odd(t.origin_x, i), j0 = j - odd(t.origin_y, j), i1 = i0 + 1.0f, j1 = j0 + 1.0f;
         const T w00 = 1.0f / t.inv_w.at(i0, j0), w10 = 1.0f / t.inv_w.at(i1, j0), w01 = 1.0f / t.inv_w.at(i0, j1);
         for (size_t c = 0; c < 2; ++c) {

@@ -38,7 +38,7 @@ struct BinnedTriangles {
 // are `rect`, in draw order; the ordinal counts them (hidden_surface_removal.h names a
 // triangle by it). Without Planes, the setup has its coverage only (f makes the planes
 // when it needs them).
-template <int Samples, bool Planes = true, uint64_t Flat = 0, int N, class F>
+template <int Samples, bool Planes = true, uint64_t Flat = 0, bool Constant = false, int N, class F>
 void for_each_triangle_setup(const BinnedTriangles<N>& draw, const RenderState& state, int tx, int ty, const Rect& rect, F&& f) {
     TriangleSetup<N> setup;
     setup.options = PlaneOptions::of(state);
@@ -67,7 +67,7 @@ void for_each_triangle_setup(const BinnedTriangles<N>& draw, const RenderState& 
             const TriangleRef& r = refs[k];
             if (setup_coverage<Samples>(bin.vertex(r.v[0], draw.post), bin.vertex(r.v[1], draw.post),
                                         bin.vertex(r.v[2], draw.post), front, rect, setup)) {
-                if constexpr (Planes) setup_planes<Flat>(setup);
+                if constexpr (Planes) setup_planes<Flat, Constant>(setup);
                 f(setup, ordinal);
             }
         }
@@ -78,6 +78,9 @@ template <Shader S, int Samples, bool Blended, class DepthStencil = DepthTest>
 struct TileBackEnd {
     static constexpr int N = kVaryingCount<typename S::Varyings>;
     static constexpr uint64_t Flat = kFlatVaryings<S>;
+    // Blended draws of shaders that read varyings alone shade a triangle whose varyings are
+    // constant once (draw_groups); setup looks for those only in them (setup_planes).
+    static constexpr bool kConstant = Blended && VaryingsOnlyShader<S>;
     using V = typename S::Varyings;
     // Draws that test stencil (general_back_end.h sends the single-sampled opaque ones here)
     // run the fragment queue or EightPixelGroups, with the stencil test where depth is tested.
@@ -122,11 +125,11 @@ struct TileBackEnd {
                 // sit among the tile loop's spilled registers.
                 static thread_local FragmentQueue<S, Samples> queue;
                 queue.start(shader, fb);
-                for_each_triangle_setup<Samples, /*Planes=*/false, Flat>(triangles, state, tx, ty, rect,
+                for_each_triangle_setup<Samples, /*Planes=*/false, Flat, kConstant>(triangles, state, tx, ty, rect,
                                                                    [&](TriangleSetup<N>& setup, uint32_t) {
                     if (Samples == 1 && is_large(setup.bounds)) {
                         queue.flush();
-                        setup_planes<Flat>(setup);
+                        setup_planes<Flat, kConstant>(setup);
                         shaded += draw_groups(setup);
                     } else {
                         shaded += queue_triangle(setup, queue);  // makes the planes if needed
@@ -136,7 +139,7 @@ struct TileBackEnd {
                 return shaded;
             }
         }
-        for_each_triangle_setup<Samples, true, Flat>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+        for_each_triangle_setup<Samples, true, Flat, kConstant>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
             if constexpr (Samples == 1 && BatchShader<S>) {
                 if (kStencil || WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {  // EightPixelGroups
                     shaded += draw_groups(setup);
@@ -159,7 +162,7 @@ struct TileBackEnd {
             const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
             shade_fragment<Samples, Blended>(shader, depth, blend, fb, px.x, px.y, px.mask, px.z.data(),
                                        interpolate_depth(t, i, j), t.front_facing,
-                                       [&] { return from_array<V>(interpolate_varyings<S>(t, i, j)); }, shaded);
+                                       [&] { return from_array<V>(interpolate_varyings<S, kConstant>(t, i, j)); }, shaded);
         });
         return shaded;
     }
@@ -174,16 +177,21 @@ struct TileBackEnd {
         // triangle, shaded here once.
         std::array<f8, 4> constant_rgba{};
         bool shaded_once = false;
-        if constexpr (VaryingsOnlyShader<S>) {
+        if constexpr (kConstant) {
             if (t.constant_varyings) {
-                shader.fragment_batch(interpolate_varyings<S>(t, splat(0.0f), splat(0.0f)), splat(0.0f), t.front_facing,
+                shader.fragment_batch(interpolate_varyings<S, kConstant>(t, splat(0.0f), splat(0.0f)), splat(0.0f), t.front_facing,
                                       constant_rgba);
                 shaded_once = true;
             }
         }
         auto shade = [&](f8 i, f8 j, f8 z, std::array<f8, 4>& rgba) {
-            if (shaded_once) rgba = constant_rgba;
-            else shader.fragment_batch(interpolate_varyings<S>(t, i, j), z, t.front_facing, rgba);
+            if constexpr (kConstant) {
+                if (shaded_once) {
+                    rgba = constant_rgba;
+                    return;
+                }
+            }
+            shader.fragment_batch(interpolate_varyings<S, kConstant>(t, i, j), z, t.front_facing, rgba);
         };
         rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
             const f8 j = splat(float(y - t.origin_y));
@@ -231,14 +239,14 @@ struct TileBackEnd {
         // The triangle may come with its coverage only: its planes are made at its first
         // covered group, so a triangle that covers no sample costs only its edge functions.
         auto need_planes = [&] {
-            if (!t.has_planes) setup_planes<Flat>(t);
+            if (!t.has_planes) setup_planes<Flat, kConstant>(t);
         };
         // Queues the pixels of group [x, x + 8) of row y set in `pass`, writing `samples` of each.
         auto queue_group = [&](int y, int x, i8 pass, i8 samples) {
             const f8 i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
             queued += unsigned(__builtin_popcount(bits(pass)));
             const i8 pixel = (splat_i(int32_t(fb.sample_index(0, y))) + (kLaneIndex + x) * Samples);
-            queue.push(pass, interpolate_depth(t, i, j), interpolate_varyings<S>(t, i, j), pixel, samples, t.front_facing);
+            queue.push(pass, interpolate_depth(t, i, j), interpolate_varyings<S, kConstant>(t, i, j), pixel, samples, t.front_facing);
         };
         if constexpr (Samples == 1) {
             auto test_group = [&](int y, int x, i8 covered) {
@@ -291,7 +299,7 @@ struct TileBackEnd {
                 if (!pass) return;
                 const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
                 ++queued;
-                queue.push(interpolate_depth(t, i, j), interpolate_varyings<S>(t, i, j), int32_t(base), pass, t.front_facing);
+                queue.push(interpolate_depth(t, i, j), interpolate_varyings<S, kConstant>(t, i, j), int32_t(base), pass, t.front_facing);
             });
         }
         return queued;

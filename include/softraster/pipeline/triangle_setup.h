@@ -81,7 +81,8 @@ struct TriangleSetup {
     bool has_planes = false;
     // Every varying has the same value at the three corners (or is flat): then var_w holds
     // the values themselves as constant planes, and interpolation returns them exactly.
-    // (Beside has_planes, in its padding: the struct keeps its size.)
+    // Only draws that set up planes with Constant (setup_planes) look; for the others it
+    // stays false. (Beside has_planes, in its padding: the struct keeps its size.)
     bool constant_varyings = false;
     PlaneOptions options;        // set per draw, before setup_coverage
     DepthPlane z;                // window depth
@@ -134,7 +135,12 @@ bool constant_varyings(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, con
 
 // Makes the interpolation planes of a triangle whose coverage is set up. Flat: the shader's
 // flat varyings (shader.h), whose planes are the provoking vertex's value, constant.
-template <uint64_t Flat = 0, int N>
+// Constant: look for constant varyings (constant_varyings above). A draw decides once, at
+// compile time, and every path of the draw interpolates with the same choice
+// (interpolate_perspective), so a pixel's value never depends on the path that drew it.
+// Only blended draws whose shaders read varyings alone look (tile_back_end.h): they shade
+// such a triangle once; elsewhere the test and its branch would cost without a gain.
+template <uint64_t Flat = 0, bool Constant = false, int N>
 void setup_planes(TriangleSetup<N>& t) {
     // Plane gradients by Cramer's rule on the two edge vectors from vertex 0, in double,
     // then each plane's value at the center of the rectangle's first pixel.
@@ -173,12 +179,14 @@ void setup_planes(TriangleSetup<N>& t) {
     // normal, one color) has them everywhere: (a/w)/(1/w) = a exactly in real numbers, and
     // taking a itself avoids the rounding of that division (and the division). A smooth
     // mesh's triangle usually differs in its first varying: the search stops there.
-    t.constant_varyings = constant_varyings<Flat>(v0, v1, v2);
-    if (t.constant_varyings) {
-        t.inv_w = Plane{1.0f, 0.0f, 0.0f};
-        for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
-        t.has_planes = true;
-        return;
+    if constexpr (Constant) {
+        t.constant_varyings = constant_varyings<Flat>(v0, v1, v2);
+        if (t.constant_varyings) {
+            t.inv_w = Plane{1.0f, 0.0f, 0.0f};
+            for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
+            t.has_planes = true;
+            return;
+        }
     }
     if (t.options.noperspective) {
         t.inv_w = Plane{1.0f, 0.0f, 0.0f};
