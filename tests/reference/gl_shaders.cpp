@@ -1,0 +1,212 @@
+// The reference's GLSL: the scene format's formulas as the shaders llvmpipe runs.
+#include "gl_shaders.h"
+
+namespace glref {
+
+// Each (shading model, texture, light count) combination is compiled as its own program,
+// with the choices as #defines, as a real OpenGL application would: llvmpipe then runs no
+// branch on material state per fragment (fair timing), and the formulas read as in the spec.
+// Both stages: the point and spot lights' uniforms and term (docs/scene-format.md
+// "Point and spot lights").
+const char* const kLightPrelude = R"(
+#if POSITIONAL > 0
+uniform vec3 u_pl_position[POSITIONAL];
+uniform vec3 u_pl_color[POSITIONAL];       // color times intensity
+uniform float u_pl_inv_range2[POSITIONAL]; // 1 / range^2, 0 without a range
+uniform vec3 u_pl_spot_dir[POSITIONAL];
+uniform vec2 u_pl_cone[POSITIONAL];        // spot: 1 / (cos inner - cos outer), -cos outer * that; point: 0, 1
+vec3 positional_light(int i, vec3 p, out vec3 l) {
+    vec3 lv = u_pl_position[i] - p;
+    float d2 = max(dot(lv, lv), 1e-8);
+    l = lv / sqrt(d2);
+    float t = d2 * u_pl_inv_range2[i];
+    float k = clamp(1.0 - t * t, 0.0, 1.0) / d2;
+    float a = clamp(dot(-l, u_pl_spot_dir[i]) * u_pl_cone[i].x + u_pl_cone[i].y, 0.0, 1.0);
+    return u_pl_color[i] * (k * a * a);
+}
+#endif
+)";
+
+const char* const kVertexShader = R"(
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec4 a_color;
+layout(location = 4) in vec4 a_tangent;
+uniform mat4 u_mvp;
+uniform mat4 u_model;
+uniform mat3 u_normal_matrix;
+uniform vec3 u_ambient;
+uniform vec3 u_to_light[8];
+uniform vec3 u_light_color[8];
+INTERP out vec3 v_world;
+INTERP out vec3 v_normal;
+INTERP out vec2 v_uv;
+INTERP out vec4 v_color;
+INTERP out vec3 v_intensity;
+#if NORMAL_MAP
+INTERP out vec4 v_tangent;
+#endif
+void main() {
+    v_world = (u_model * vec4(a_pos, 1.0)).xyz;
+    v_normal = u_normal_matrix * a_normal;
+#if NORMAL_MAP
+    v_tangent = vec4(mat3(u_model) * a_tangent.xyz, a_tangent.w);
+#endif
+    v_uv = a_uv;
+    v_color = a_color;
+    v_intensity = u_ambient;
+#if SHADING == 2
+    vec3 n = normalize(v_normal);
+    for (int i = 0; i < LIGHTS; ++i) v_intensity += u_light_color[i] * max(0.0, dot(n, u_to_light[i]));
+#if POSITIONAL > 0
+    for (int i = 0; i < POSITIONAL; ++i) {
+        vec3 l;
+        vec3 c = positional_light(i, v_world, l);
+        v_intensity += c * max(0.0, dot(n, l));
+    }
+#endif
+#endif
+    vec4 clip = u_mvp * vec4(a_pos, 1.0);
+    // Flip y: GL window row 0 (the first row in memory) becomes the top row of the picture,
+    // so llvmpipe's fill rule and sample pattern apply in the picture as stored.
+    gl_Position = vec4(clip.x, -clip.y, clip.z, clip.w);
+}
+)";
+
+const char* const kFragmentShader = R"(
+INTERP in vec3 v_world;
+INTERP in vec3 v_normal;
+INTERP in vec2 v_uv;
+INTERP in vec4 v_color;
+INTERP in vec3 v_intensity;
+#if NORMAL_MAP
+INTERP in vec4 v_tangent;
+uniform sampler2D u_normal_texture;
+uniform float u_normal_scale;
+#endif
+// SHADING: 0 unlit, 1 flat, 2 gouraud, 3 lambert, 4 blinn_phong, 5 normals, 6 depth, 7 phong, 8 pbr
+uniform sampler2D u_texture;
+uniform vec4 u_color;
+uniform vec3 u_specular;
+uniform float u_shininess;
+uniform vec3 u_eye;
+uniform vec3 u_ambient;
+uniform vec3 u_to_light[8];
+uniform vec3 u_light_color[8];
+uniform float u_alpha_cutoff;
+out vec4 frag;
+#if SHADING == 8
+// glTF 2.0 appendix B: Schlick's Fresnel, GGX, the height-correlated Smith visibility; a
+// light adds pi f c (N.L) (the pi: a light's color is what a white diffuse surface reflects).
+#define PI 3.14159265358979
+uniform float u_metallic;
+uniform float u_roughness;
+uniform float u_occlusion_strength;
+uniform vec3 u_emissive;
+uniform sampler2D u_mr_texture;
+uniform sampler2D u_occlusion_texture;
+uniform sampler2D u_emissive_texture;
+vec3 pbr_light(vec3 c_diff, vec3 f0, float a2, vec3 n, vec3 v, vec3 l, float nv) {
+    float nl = dot(n, l);
+    if (!(nl > 0.0)) return vec3(0.0);
+    vec3 h = normalize(l + v);
+    float nh = max(0.0, dot(n, h)), vh = max(0.0, dot(v, h));
+    vec3 F = f0 + (1.0 - f0) * pow(1.0 - vh, 5.0);
+    float dd = nh * nh * (a2 - 1.0) + 1.0;
+    float D = a2 / (PI * dd * dd);
+    float vis = 1.0 / ((nl + sqrt(a2 + (1.0 - a2) * nl * nl)) * (nv + sqrt(a2 + (1.0 - a2) * nv * nv)));
+    return ((1.0 - F) * c_diff / PI + F * (D * vis)) * (PI * nl);
+}
+#endif
+// SHADING 4: N . H (Blinn-Phong); 7: R . V (Phong)
+float specular_factor(vec3 n, vec3 l, vec3 v) {
+#if SHADING == 7
+    float x = max(0.0, dot(reflect(-l, n), v));
+#else
+    float x = max(0.0, dot(n, normalize(l + v)));
+#endif
+    return u_shininess == 0.0 ? 1.0 : pow(x, u_shininess);
+}
+void main() {
+#if SHADING == 6
+    frag = vec4(vec3(gl_FragCoord.z), 1.0);
+#elif SHADING == 5
+    frag = vec4(0.5 * normalize(v_normal) + 0.5, 1.0);
+#else
+    vec4 base = u_color * v_color;
+#if TEXTURED
+    base *= texture(u_texture, v_uv);
+#endif
+#if SHADING == 0
+    frag = base;
+#elif SHADING == 8
+    float metallic = u_metallic, roughness = u_roughness, occlusion = 1.0;
+    vec3 emissive = u_emissive;
+#if MR_MAP
+    vec4 mr = texture(u_mr_texture, v_uv);
+    roughness *= mr.g;
+    metallic *= mr.b;
+#endif
+#if OCCLUSION_MAP
+    occlusion = 1.0 + u_occlusion_strength * (texture(u_occlusion_texture, v_uv).r - 1.0);
+#endif
+#if EMISSIVE_MAP
+    emissive *= texture(u_emissive_texture, v_uv).rgb;
+#endif
+    float a = max(0.03, roughness) * max(0.03, roughness), a2 = a * a;
+    vec3 c_diff = base.rgb * (1.0 - metallic), f0 = mix(vec3(0.04), base.rgb, metallic);
+    vec3 n = normalize(v_normal), v = normalize(u_eye - v_world);
+#if NORMAL_MAP
+    // MikkTSpace's pixel-shader form: N and T as interpolated, B = w cross(N, T).
+    vec3 m = texture(u_normal_texture, v_uv).rgb * 2.0 - 1.0;
+    m.xy *= u_normal_scale;
+    vec3 b = v_tangent.w * cross(v_normal, v_tangent.xyz);
+    n = normalize(m.x * v_tangent.xyz + m.y * b + m.z * v_normal);
+#endif
+    float nv = max(0.0, dot(n, v));
+    vec3 rgb = u_ambient * c_diff * occlusion;
+    for (int i = 0; i < LIGHTS; ++i) rgb += u_light_color[i] * pbr_light(c_diff, f0, a2, n, v, u_to_light[i], nv);
+#if POSITIONAL > 0
+    for (int i = 0; i < POSITIONAL; ++i) {
+        vec3 l;
+        vec3 c = positional_light(i, v_world, l);
+        rgb += c * pbr_light(c_diff, f0, a2, n, v, l, nv);
+    }
+#endif
+    frag = vec4(rgb + emissive, base.a);
+#elif SHADING == 2
+    frag = vec4(base.rgb * v_intensity, base.a);
+#else
+    vec3 n = normalize(v_normal);
+    vec3 intensity = u_ambient;
+    vec3 spec = vec3(0.0);
+    vec3 v = normalize(u_eye - v_world);
+    for (int i = 0; i < LIGHTS; ++i) {
+        float nl = dot(n, u_to_light[i]);
+        intensity += u_light_color[i] * max(0.0, nl);
+#if SHADING == 4 || SHADING == 7
+        if (nl > 0.0) spec += u_light_color[i] * u_specular * specular_factor(n, u_to_light[i], v);
+#endif
+    }
+#if POSITIONAL > 0
+    for (int i = 0; i < POSITIONAL; ++i) {
+        vec3 l;
+        vec3 c = positional_light(i, v_world, l);
+        float nl = dot(n, l);
+        intensity += c * max(0.0, nl);
+#if SHADING == 4 || SHADING == 7
+        if (nl > 0.0) spec += c * u_specular * specular_factor(n, l, v);
+#endif
+    }
+#endif
+    frag = vec4(base.rgb * intensity + spec, base.a);
+#endif
+#endif
+#if CUTOFF
+    if (frag.a < u_alpha_cutoff) discard;
+#endif
+}
+)";
+
+}  // namespace glref

@@ -1,0 +1,11 @@
+// The reference's GLSL sources (gl_shaders.cpp). A program is the version line, its
+// #defines (gl_scene.cpp), the light prelude, then the stage's source.
+#pragma once
+
+namespace glref {
+
+extern const char* const kLightPrelude;    // both stages: point and spot lights
+extern const char* const kVertexShader;
+extern const char* const kFragmentShader;
+
+}  // namespace glref
