@@ -12,11 +12,11 @@
 // on the handedness, the weighted majority wins.
 #include <algorithm>
 #include <cmath>
-
-#include <glm/geometric.hpp>
-
 #include <map>
 #include <memory>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "softraster/scene/mesh.h"
 #include "softraster/scene/scene.h"
