@@ -82,7 +82,7 @@ public:
         return fb_->read_pixels();
     }
 
-    // Draws into another framebuffer of the same sample count from now on.
+    // Draws into another framebuffer of the same sample count and color space from now on.
     void set_framebuffer(Framebuffer& fb) { fb_ = &fb; }
     Framebuffer& framebuffer() { return *fb_; }
     uint64_t fragments_shaded() const { return fragments_shaded_; }  // by the last execute()
@@ -91,8 +91,9 @@ private:
     template <Topology T, Shader S>
     void record(const S& shader, std::span<const typename S::Vertex> vertices, std::span<const uint32_t> indices) {
         validate_indices(indices, vertices.size(), T);
-        if (needs_general_back_end(state, fb_->samples())) {
-            commands_.push_back(std::make_unique<GeneralTriangleCommand<S, T>>(shader, state, fb_->samples(), vertices, indices));
+        if (needs_general_back_end(state, fb_->samples(), fb_->srgb())) {
+            commands_.push_back(
+                std::make_unique<GeneralTriangleCommand<S, T>>(shader, state, fb_->samples(), fb_->color_space(), vertices, indices));
             return;
         }
         dispatch_samples_blending(fb_->samples(), state.blend, [&]<int Samples, bool Blended>() {

@@ -3,7 +3,8 @@
 //
 // Sample s of pixel (x, y) lives at index (y * width + x) * samples + s, so the samples of a
 // pixel are adjacent (one cache line for 4x MSAA color) and a single-sampled buffer is a
-// plain image. Colors are stored quantized to 8 bits, as in a GL_RGBA8 attachment.
+// plain image. Colors are stored quantized to 8 bits, as in a GL_RGBA8 attachment, or with
+// r, g, b sRGB-encoded, as in a GL_SRGB8_ALPHA8 one with GL_FRAMEBUFFER_SRGB on (srgb.h).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include <glm/vec4.hpp>
 
 #include "softraster/image.h"
+#include "softraster/srgb.h"
 
 namespace softraster {
 
@@ -28,12 +30,19 @@ inline Rgba8 quantize_rgba8(const glm::vec4& c) {
     return {quantize_unorm8(c.r), quantize_unorm8(c.g), quantize_unorm8(c.b), quantize_unorm8(c.a)};
 }
 
+// A color as a framebuffer of that color space stores it: sRGB encodes r, g, b (alpha stays
+// linear).
+inline Rgba8 quantize_rgba8(const glm::vec4& c, ColorSpace space) {
+    if (space == ColorSpace::Linear) return quantize_rgba8(c);
+    return {srgb::encode(c.r), srgb::encode(c.g), srgb::encode(c.b), quantize_unorm8(c.a)};
+}
+
 class Framebuffer {
 public:
     static constexpr int kMaxSize = 16384;
 
-    Framebuffer(int width, int height, int samples = 1)
-        : width_(width), height_(height), samples_(samples) {
+    Framebuffer(int width, int height, int samples = 1, ColorSpace color = ColorSpace::Linear)
+        : width_(width), height_(height), samples_(samples), color_space_(color) {
         if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize)
             throw std::invalid_argument("framebuffer size must be 1..16384 in each direction");
         if (!valid_samples(samples)) throw std::invalid_argument("samples must be 1, 2, 4, 8 or 16");
@@ -47,8 +56,10 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     int samples() const { return samples_; }
+    ColorSpace color_space() const { return color_space_; }
+    bool srgb() const { return color_space_ == ColorSpace::Srgb; }
 
-    void clear_color(const glm::vec4& c) { std::fill(color_.begin(), color_.end(), quantize_rgba8(c)); }
+    void clear_color(const glm::vec4& c) { std::fill(color_.begin(), color_.end(), quantize_rgba8(c, color_space_)); }
     void clear_depth(float z = 1.0f) { std::fill(depth_.begin(), depth_.end(), z); }
 
     // The stencil buffer exists once asked for (Context does when a draw tests stencil),
@@ -73,6 +84,7 @@ public:
 
 private:
     int width_, height_, samples_;
+    ColorSpace color_space_;
     std::vector<Rgba8> color_;
     std::vector<float> depth_;
     std::vector<uint8_t> stencil_;

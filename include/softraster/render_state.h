@@ -2,7 +2,8 @@
 //
 // Draws whose state the fast back end handles (tile_back_end.h: depth test and offset, any
 // blend equation, color on or off, 1 or 4 samples) run there; anything else (stencil, a
-// partial color mask, alpha cutoff, alpha-to-coverage, 2, 8 or 16 samples) runs in the
+// partial color mask, alpha cutoff, alpha-to-coverage, 2, 8 or 16 samples, blending into
+// an sRGB framebuffer) runs in the
 // general back end (general_back_end.h), so scenes that do not use a
 // feature pay nothing for it (needs_general_back_end below).
 #pragma once
@@ -87,10 +88,11 @@ struct RenderState {
     ScissorRect scissor;
 };
 
-// Whether a draw needs the general back end (see the top of this file).
-inline bool needs_general_back_end(const RenderState& s, int samples) {
+// Whether a draw needs the general back end (see the top of this file). Blending into an
+// sRGB framebuffer does too: it blends in float, in linear light (output_merge.h).
+inline bool needs_general_back_end(const RenderState& s, int samples, bool srgb = false) {
     return s.stencil_test || (s.color_write && s.color_mask != 0xf) || s.alpha_test ||
-           s.alpha_to_coverage || (samples != 1 && samples != 4);
+           s.alpha_to_coverage || (samples != 1 && samples != 4) || (srgb && s.blend != BlendMode::Opaque);
 }
 
 }  // namespace softraster

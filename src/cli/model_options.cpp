@@ -74,6 +74,17 @@ void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size) {
         ->check(CLI::IsMember({"unlit", "flat", "gouraud", "lambert", "blinn_phong", "phong", "pbr", "normals", "depth"}));
     cmd.add_option("--camera", opt.camera, "Look through the file's camera N (0 is the first) instead of framing the model")
         ->check(CLI::Range(0, 1 << 20));
+    cmd.add_option("--color-space", opt.color_space,
+                   "srgb: color textures decoded, light added and blended linearly, the picture encoded (as glTF intends); "
+                   "linear: every value used as stored")
+        ->check(CLI::IsMember({"srgb", "linear"}))
+        ->capture_default_str();
+    cmd.add_option("--tone-mapping", opt.tone_mapping, "Tone curve for bright light: none, reinhard or aces")
+        ->check(CLI::IsMember({"none", "reinhard", "aces"}))
+        ->capture_default_str();
+    cmd.add_option("--exposure", opt.exposure, "Light multiplied by this before the tone curve")
+        ->check(CLI::Range(1e-6, 1e6))
+        ->capture_default_str();
     cmd.add_flag("-v,--verbose", opt.verbose, "Also say what the file has that is not drawn");
 }
 
@@ -81,7 +92,10 @@ ModelPicture ModelOptions::picture(int default_size) const {
     ModelPicture p;
     p.width = p.height = default_size;
     if (!size.empty()) parse_size(size, p.width, p.height);
+    p.color_space = color_space == "srgb" ? ColorSpace::Srgb : ColorSpace::Linear;
     if (!background.empty()) p.background = parse_color(background);
+    p.tone_mapping.curve = tone_mapping == "reinhard" ? ToneCurve::Reinhard : tone_mapping == "aces" ? ToneCurve::Aces : ToneCurve::None;
+    p.tone_mapping.exposure = exposure;
     p.samples = samples;
     p.view = kViews.at(view);
     if (!shading.empty()) p.shading = kShadings.at(shading);
@@ -90,7 +104,7 @@ ModelPicture ModelOptions::picture(int default_size) const {
 }
 
 bool ModelOptions::any_given(const CLI::App& cmd) const {
-    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera"})
+    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure"})
         if (cmd.count(name) > 0) return true;
     return false;
 }

@@ -11,8 +11,9 @@
 namespace softraster::cli {
 
 struct ModelOptions {
-    std::string size, view = "three-quarter", background, shading;
+    std::string size, view = "three-quarter", background, shading, color_space = "srgb", tone_mapping = "none";
     int samples = 4, camera = -1;
+    float exposure = 1.0f;
     bool verbose = false;
 
     // The picture these options describe; `default_size` when --size is not given.

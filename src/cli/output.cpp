@@ -25,9 +25,9 @@ void check_output_path(const std::filesystem::path& out, std::initializer_list<P
         throw InputError(out.string() + ": output folder '" + dir.string() + "' does not exist");
 }
 
-void write_output(const Image& image, const std::filesystem::path& out, std::chrono::duration<double> elapsed) {
+void write_output(const Image& image, const std::filesystem::path& out, std::chrono::duration<double> elapsed, ColorSpace color) {
     try {
-        write_picture(image, out);
+        write_picture(image, out, color);
     } catch (const std::runtime_error& e) {
         throw InputError(e.what());
     }

@@ -16,6 +16,7 @@ void check_output_path(const std::filesystem::path& out,
                                                                       PictureFormat::Exr});
 
 // Writes the picture (atomically) in its extension's format and prints one summary line to stderr.
-void write_output(const Image& image, const std::filesystem::path& out, std::chrono::duration<double> elapsed);
+void write_output(const Image& image, const std::filesystem::path& out, std::chrono::duration<double> elapsed,
+                  ColorSpace color = ColorSpace::Linear);
 
 }  // namespace softraster::cli

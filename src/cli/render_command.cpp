@@ -28,7 +28,7 @@ void write_buffer(const GrayImage<T>& picture, const std::string& path) {
 // A model file's scene: textures that cannot be read are drawn without (a warning line).
 Scene picture_model(const std::filesystem::path& path, const ModelOptions& options) {
     const ModelPicture picture = options.picture(512);
-    const Model model = load_model(path, MissingTexture::Warn);
+    const Model model = load_model(path, MissingTexture::Warn, picture.color_space);
     for (const std::string& w : model.warnings) std::fprintf(stderr, "softraster: warning: %s\n", w.c_str());
     if (options.verbose)
         for (const std::string& what : model.ignored) std::fprintf(stderr, "%s: not drawn: %s\n", path.string().c_str(), what.c_str());
@@ -76,7 +76,7 @@ Run add_render_command(CLI::App& app) {
         const SceneRenderer renderer(scene, thread_count(opt->threads));
         Framebuffer fb = renderer.make_framebuffer();
         renderer.render(fb);
-        write_output(renderer.resolve(fb), out, std::chrono::steady_clock::now() - start);
+        write_output(renderer.resolve(fb), out, std::chrono::steady_clock::now() - start, scene.color_space);
         // (The buffers at the resolution they were rendered at: supersampled scenes' are larger.)
         if (!opt->depth_out.empty()) {
             const GrayImage<float> depth = depth_picture(fb);

@@ -149,7 +149,7 @@ void limit_memory(size_t megabytes) {
     {
         const auto start = Clock::now();
         try {
-            const Model model = load_model(item.input, MissingTexture::Warn);
+            const Model model = load_model(item.input, MissingTexture::Warn, picture.color_space);
             const Scene scene = model_scene(model, picture);
             const SceneRenderer renderer(scene, threads);
             const Image image = renderer.render();

@@ -86,7 +86,7 @@ std::optional<PictureFormat> picture_format(const std::filesystem::path& path) {
     return std::nullopt;
 }
 
-void write_picture(const Image& image, const std::filesystem::path& path) {
+void write_picture(const Image& image, const std::filesystem::path& path, ColorSpace color) {
     const auto format = picture_format(path);
     if (!format) throw std::runtime_error(path.string() + ": unknown picture format (use .png, .tga, .ppm or .exr)");
     switch (*format) {
@@ -118,7 +118,9 @@ void write_picture(const Image& image, const std::filesystem::path& path) {
             std::vector<float> rgba(image.pixels.size() * 4);
             for (size_t i = 0; i < image.pixels.size(); ++i) {
                 const Rgba8 c = image.pixels[i];
-                rgba[4 * i] = c.r / 255.0f, rgba[4 * i + 1] = c.g / 255.0f, rgba[4 * i + 2] = c.b / 255.0f, rgba[4 * i + 3] = c.a / 255.0f;
+                if (color == ColorSpace::Srgb) rgba[4 * i] = srgb::decode(c.r), rgba[4 * i + 1] = srgb::decode(c.g), rgba[4 * i + 2] = srgb::decode(c.b);
+                else rgba[4 * i] = c.r / 255.0f, rgba[4 * i + 1] = c.g / 255.0f, rgba[4 * i + 2] = c.b / 255.0f;
+                rgba[4 * i + 3] = c.a / 255.0f;
             }
             write_exr(image.width, image.height, {{"R", rgba.data()}, {"G", rgba.data() + 1}, {"B", rgba.data() + 2}, {"A", rgba.data() + 3}},
                       4, path);

@@ -1,17 +1,42 @@
 // Stage 10, resolve: the multisampled buffer becomes the picture.
-// Each channel of a pixel is floor(mean + 0.5) of its stored 8-bit samples.
+// Each channel of a pixel is floor(mean + 0.5) of its stored 8-bit samples; in an sRGB
+// buffer r, g, b average in linear light: the mean of the decoded samples, encoded.
 #include <algorithm>
 #include <cmath>
 
 #include "softraster/pipeline/resolve.h"
 
 namespace softraster {
+namespace {
+
+// The sRGB mean of n stored colors: r, g, b decoded, averaged and encoded (in the order
+// given, a sum then a multiplication); alpha as in a linear buffer.
+template <class At>
+Rgba8 srgb_mean(unsigned n, At&& at) {
+    float sum[3] = {0, 0, 0};
+    unsigned alpha = n / 2;
+    for (unsigned i = 0; i < n; ++i) {
+        const Rgba8 c = at(i);
+        sum[0] += srgb::decode(c.r), sum[1] += srgb::decode(c.g), sum[2] += srgb::decode(c.b);
+        alpha += c.a;
+    }
+    const float inv = 1.0f / float(n);
+    return {srgb::encode(sum[0] * inv), srgb::encode(sum[1] * inv), srgb::encode(sum[2] * inv), uint8_t(alpha / n)};
+}
+
+}  // namespace
 
 void resolve(const Framebuffer& fb, Image& img) {
     if (img.width != fb.width() || img.height != fb.height()) img = Image(fb.width(), fb.height());
     const size_t pixels = img.pixels.size();
     if (fb.samples() == 1) {  // nothing to average
         std::copy(fb.color_data(), fb.color_data() + pixels, img.pixels.begin());
+        return;
+    }
+    if (fb.srgb()) {
+        const auto n = unsigned(fb.samples());
+        const Rgba8* c = fb.color_data();
+        for (size_t p = 0; p < pixels; ++p, c += n) img.pixels[p] = srgb_mean(n, [&](unsigned i) { return c[i]; });
         return;
     }
     if (fb.samples() != 4) {  // 2, 8, 16: the same rounding, channel by channel
@@ -41,12 +66,18 @@ void resolve(const Framebuffer& fb, Image& img) {
     }
 }
 
-Image downsample_box(const Image& in, int k) {
+Image downsample_box(const Image& in, int k, ColorSpace color) {
     if (k == 1) return in;
     Image out(in.width / k, in.height / k);
     const auto n = unsigned(k * k);
     for (int y = 0; y < out.height; ++y)
         for (int x = 0; x < out.width; ++x) {
+            if (color == ColorSpace::Srgb) {
+                out.pixels[size_t(y) * size_t(out.width) + size_t(x)] = srgb_mean(n, [&](unsigned i) {
+                    return in.pixels[size_t(y * k + int(i) / k) * size_t(in.width) + size_t(x * k + int(i) % k)];
+                });
+                continue;
+            }
             unsigned sum[4] = {n / 2, n / 2, n / 2, n / 2};
             for (int j = 0; j < k; ++j)
                 for (int i = 0; i < k; ++i) {

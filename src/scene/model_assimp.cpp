@@ -129,8 +129,8 @@ struct MaterialUse {
 
 class Loader {
 public:
-    Loader(const aiScene& scene, const fs::path& path, MissingTexture missing)
-        : scene_(scene), path_(path), name_(path.string()), missing_(missing) {}
+    Loader(const aiScene& scene, const fs::path& path, MissingTexture missing, ColorSpace color)
+        : scene_(scene), path_(path), name_(path.string()), missing_(missing), color_space_(color) {}
 
     Model load() {
         for (unsigned i = 0; i < scene_.mNumMaterials; ++i) materials_.push_back(read_material(*scene_.mMaterials[i]));
@@ -215,7 +215,7 @@ private:
                 mat.sampler.min = (k & 1) ? Filter::Bilinear : Filter::Nearest;
                 mat.sampler.mip = !mip ? MipFilter::None : ((k & 2) ? MipFilter::Linear : MipFilter::Nearest);
             }
-            mat.texture = texture(file.C_Str());
+            mat.texture = texture(file.C_Str(), /*color=*/true);
             break;
         }
         if (mat.shading != Shading::Unlit && m.Get(AI_MATKEY_GLTF_ALPHAMODE, alpha_mode) == AI_SUCCESS) read_pbr(m, use);
@@ -248,7 +248,7 @@ private:
         m.Get(AI_MATKEY_EMISSIVE_INTENSITY, strength);  // KHR_materials_emissive_strength
         const glm::vec3 e = glm::vec3(emissive.r, emissive.g, emissive.b) * strength;
         mat.emissive = std::isfinite(e.x + e.y + e.z) ? glm::clamp(e, 0.0f, 1e30f) : glm::vec3(0.0f);
-        auto map = [&](aiTextureType type) -> std::shared_ptr<const Texture> {
+        auto map = [&](aiTextureType type, bool color = false) -> std::shared_ptr<const Texture> {
             aiString file;
             if (m.GetTextureCount(type) == 0 || m.GetTexture(type, 0, &file) != AI_SUCCESS) return nullptr;
             unsigned uv_set = 0;
@@ -257,7 +257,7 @@ private:
                 ignored_.insert("maps on another texture coordinate set than the base color's");
                 return nullptr;
             }
-            return texture(file.C_Str());
+            return texture(file.C_Str(), color);
         };
         // (assimp's glTF 2 reader files the metallic-roughness texture as "unknown".)
         for (aiTextureType type : {aiTextureType_UNKNOWN, aiTextureType_METALNESS, aiTextureType_DIFFUSE_ROUGHNESS})
@@ -268,7 +268,7 @@ private:
             if (m.Get(AI_MATKEY_GLTF_TEXTURE_STRENGTH(aiTextureType_LIGHTMAP, 0), strength_ao) == AI_SUCCESS)
                 mat.occlusion_strength = factor(strength_ao, 1.0f);
         }
-        mat.emissive_texture = map(aiTextureType_EMISSIVE);
+        mat.emissive_texture = map(aiTextureType_EMISSIVE, /*color=*/true);
         mat.normal_texture = map(aiTextureType_NORMALS);
         if (mat.normal_texture) {
             float scale = 1.0f;
@@ -280,14 +280,16 @@ private:
     // A texture by the name the material gives: "*N" or a name assimp knows as embedded, else
     // a file beside the model (Windows separators and absolute paths from the author's
     // machine are common: the file name alone is tried last).
-    std::shared_ptr<const Texture> texture(const std::string& ref) {
-        auto [slot, fresh] = textures_.try_emplace(ref);
+    // Color textures (base color, emissive) take the scene's color space; the other maps are data.
+    std::shared_ptr<const Texture> texture(const std::string& ref, bool color = false) {
+        const ColorSpace space = color ? color_space_ : ColorSpace::Linear;
+        auto [slot, fresh] = textures_.try_emplace({ref, space});
         if (!fresh) return slot->second;
         try {
             if (const aiTexture* embedded = scene_.GetEmbeddedTexture(ref.c_str())) {
-                slot->second = std::make_shared<Texture>(embedded_image(*embedded, ref));
+                slot->second = std::make_shared<Texture>(embedded_image(*embedded, ref), space);
             } else {
-                slot->second = std::make_shared<Texture>(read_image(texture_file(ref)));
+                slot->second = std::make_shared<Texture>(read_image(texture_file(ref)), space);
             }
         } catch (const InputError& e) {
             if (missing_ == MissingTexture::Fail) fail("texture '" + ref + "': " + e.what());
@@ -516,17 +518,18 @@ private:
     const fs::path path_;
     const std::string name_;
     const MissingTexture missing_;
+    const ColorSpace color_space_;
     Model model_;
     std::vector<MaterialUse> materials_;
     std::vector<MeshUse> meshes_;
-    std::map<std::string, std::shared_ptr<const Texture>> textures_;
+    std::map<std::pair<std::string, ColorSpace>, std::shared_ptr<const Texture>> textures_;
     std::map<std::string, glm::mat4> world_;  // node name -> world transform (for cameras)
     std::set<std::string> ignored_;
 };
 
 }  // namespace
 
-Model load_model(const fs::path& path, MissingTexture missing) {
+Model load_model(const fs::path& path, MissingTexture missing, ColorSpace color) {
     const std::string name = path.string();
     std::error_code ec;
     if (!fs::exists(path, ec)) throw InputError(name + ": file not found");
@@ -544,7 +547,7 @@ Model load_model(const fs::path& path, MissingTexture missing) {
     // Then polygons become triangles and each mesh is left with one primitive type.
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
     if (!scene) throw InputError(name + ": " + importer_error(importer));
-    Model model = Loader(*scene, path, missing).load();
+    Model model = Loader(*scene, path, missing, color).load();
     add_tangents(model.objects);
     return model;
 }

@@ -40,7 +40,11 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
     scene.width = picture.width;
     scene.height = picture.height;
     scene.background = picture.background;
+    if (picture.color_space == ColorSpace::Srgb)  // the light that is stored as the values asked for
+        for (int k = 0; k < 3; ++k) scene.background[k] = srgb::decode_value(picture.background[k]);
     scene.samples = picture.samples;
+    scene.color_space = picture.color_space;
+    scene.tone_mapping = picture.tone_mapping;
     scene.objects = model.objects;
     if (picture.shading)
         for (SceneObject& o : scene.objects) o.material.shading = *picture.shading;

@@ -191,12 +191,14 @@ struct Loader {
     std::string file;
     int version = 1;
     int samples = 1;
+    ColorSpace color_space = ColorSpace::Linear;  // the picture's, and the color textures'
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;  // one load per distinct file
     std::map<std::string, std::shared_ptr<const Model>> models;
-    std::map<std::string, std::shared_ptr<const Texture>> textures;
+    std::map<std::pair<std::string, ColorSpace>, std::shared_ptr<const Texture>> textures;
 
     void read_image(const Node& n, Scene& s) {
-        n.expect_object({"width", "height", "background", "samples"}, {"supersample", "clear_stencil"}, version);
+        n.expect_object({"width", "height", "background", "samples"},
+                        {"supersample", "clear_stencil", "color_space", "tone_mapping", "exposure"}, version);
         s.width = n["width"].integer_in(1, 16384);
         s.height = n["height"].integer_in(1, 16384);
         if (n.has("background")) s.background = n["background"].vec4();
@@ -212,6 +214,13 @@ struct Loader {
                 n["supersample"].fail("the supersampled picture would exceed 16384 pixels in a direction");
         }
         if (n.has("clear_stencil")) s.clear_stencil = uint8_t(n["clear_stencil"].integer_in(0, 255));
+        if (n.has("color_space"))
+            s.color_space = n["color_space"].choice<ColorSpace>({{"linear", ColorSpace::Linear}, {"srgb", ColorSpace::Srgb}});
+        color_space = s.color_space;
+        if (n.has("tone_mapping"))
+            s.tone_mapping.curve = n["tone_mapping"].choice<ToneCurve>(
+                {{"none", ToneCurve::None}, {"reinhard", ToneCurve::Reinhard}, {"aces", ToneCurve::Aces}});
+        if (n.has("exposure")) s.tone_mapping.exposure = float(n["exposure"].number_in(0, 1e6, true, false, "0 < exposure <= 1e6"));
     }
 
     void read_camera(const Node& n, Camera& c) {
@@ -315,14 +324,17 @@ struct Loader {
         return slot;
     }
 
-    std::shared_ptr<const Texture> read_texture(const Node& n) {
+    // A color texture (base color, emissive) is sRGB-encoded in an sRGB scene; the other maps
+    // hold data, never encoded.
+    std::shared_ptr<const Texture> read_texture(const Node& n, bool color = false) {
         const std::string rel = n.string();
         if (rel.empty()) n.fail("empty texture path");
         const std::string path = (dir / rel).lexically_normal().string();
-        auto& slot = textures[path];
+        const ColorSpace space = color ? color_space : ColorSpace::Linear;
+        auto& slot = textures[{path, space}];
         if (!slot) {
             try {
-                slot = std::make_shared<Texture>(softraster::read_image(path));
+                slot = std::make_shared<Texture>(softraster::read_image(path), space);
             } catch (const InputError& e) {
                 n.fail(e.what());  // which key named the picture, then what is wrong with it
             }
@@ -418,7 +430,7 @@ struct Loader {
         }
         if (n.has("interpolation"))
             m.affine = n["interpolation"].choice<bool>({{"perspective", false}, {"affine", true}});
-        if (n.has("texture")) m.texture = read_texture(n["texture"]);
+        if (n.has("texture")) m.texture = read_texture(n["texture"], /*color=*/true);
         if (n.has("metallic")) m.metallic = float(n["metallic"].number_in(0, 1, false, false, "0..1"));
         if (n.has("roughness")) m.roughness = float(n["roughness"].number_in(0, 1, false, false, "0..1"));
         if (n.has("emissive")) {
@@ -429,7 +441,7 @@ struct Loader {
         if (n.has("occlusion_strength")) m.occlusion_strength = float(n["occlusion_strength"].number_in(0, 1, false, false, "0..1"));
         if (n.has("metallic_roughness_texture")) m.metallic_roughness_texture = read_texture(n["metallic_roughness_texture"]);
         if (n.has("occlusion_texture")) m.occlusion_texture = read_texture(n["occlusion_texture"]);
-        if (n.has("emissive_texture")) m.emissive_texture = read_texture(n["emissive_texture"]);
+        if (n.has("emissive_texture")) m.emissive_texture = read_texture(n["emissive_texture"], /*color=*/true);
         if (n.has("normal_texture")) {
             if (m.shading != Shading::Pbr) n["normal_texture"].fail("a normal map needs shading 'pbr'");
             m.normal_texture = read_texture(n["normal_texture"]);
@@ -480,7 +492,7 @@ struct Loader {
         if (rel.empty()) n["model"].fail("empty model path");
         const std::string path = (dir / rel).string();
         auto& slot = models[path];
-        if (!slot) slot = std::make_shared<Model>(load_model(path, MissingTexture::Fail));
+        if (!slot) slot = std::make_shared<Model>(load_model(path, MissingTexture::Fail, color_space));
         for (const SceneObject& part : slot->objects) {
             SceneObject placed = part;
             placed.model = o.model * part.model;

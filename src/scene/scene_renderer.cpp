@@ -203,6 +203,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         u.emissive_texture = o.material.emissive_texture.get();
         u.normal_texture = o.material.normal_texture.get();
         u.normal_scale = o.material.normal_scale;
+        u.tone_mapping = scene.tone_mapping;
         if (d.shading == Shading::Flat) {
             d.flat_mesh = world_face_normal_mesh(*o.mesh, o.model);
             d.mesh = d.flat_mesh.get();
@@ -265,11 +266,11 @@ RenderStats SceneRenderer::render(Framebuffer& fb) const {
 }
 
 Framebuffer SceneRenderer::make_framebuffer() const {
-    return Framebuffer(scene_.width * scene_.supersample, scene_.height * scene_.supersample, scene_.samples);
+    return Framebuffer(scene_.width * scene_.supersample, scene_.height * scene_.supersample, scene_.samples, scene_.color_space);
 }
 
 Image SceneRenderer::resolve(const Framebuffer& fb) const {
-    return downsample_box(fb.read_pixels(), scene_.supersample);
+    return downsample_box(fb.read_pixels(), scene_.supersample, scene_.color_space);
 }
 
 Image SceneRenderer::render() const {

@@ -15,8 +15,9 @@ namespace {
 
 // Level k + 1 from level k as glGenerateMipmap's blit makes it: each texel the bilinear
 // lookup (clamped to the edge) at its center mapped into level k. With even sizes that is
-// exactly the average of the 2x2 texels under it; rounded to the nearest 8-bit value.
-std::vector<Rgba8> downsample(const std::vector<Rgba8>& src, int sw, int sh, int dw, int dh) {
+// exactly the average of the 2x2 texels under it; rounded to the nearest 8-bit value. An
+// sRGB texture's r, g, b are decoded, filtered in linear light and encoded again.
+std::vector<Rgba8> downsample(const std::vector<Rgba8>& src, int sw, int sh, int dw, int dh, bool srgb) {
     std::vector<Rgba8> dst(size_t(dw) * size_t(dh));
     const float sx = float(sw) / float(dw), sy = float(sh) / float(dh);
     auto at = [&](int i, int j) {
@@ -29,12 +30,17 @@ std::vector<Rgba8> downsample(const std::vector<Rgba8>& src, int sw, int sh, int
             const int i0 = detail::floor_to_int(x), j0 = detail::floor_to_int(y);
             const float fx = x - float(i0), fy = y - float(j0);
             const Rgba8 a = at(i0, j0), b = at(i0 + 1, j0), c = at(i0, j0 + 1), d = at(i0 + 1, j0 + 1);
-            auto mix = [&](uint8_t pa, uint8_t pb, uint8_t pc, uint8_t pd) {
-                const float bottom = float(pa) * (1.0f - fx) + float(pb) * fx, top = float(pc) * (1.0f - fx) + float(pd) * fx;
-                return uint8_t(std::min(255.0f, std::floor(bottom * (1.0f - fy) + top * fy + 0.5f)));
+            auto mix = [&](float pa, float pb, float pc, float pd) {
+                const float bottom = pa * (1.0f - fx) + pb * fx, top = pc * (1.0f - fx) + pd * fx;
+                return bottom * (1.0f - fy) + top * fy;
             };
-            dst[size_t(j) * size_t(dw) + size_t(i)] = {mix(a.r, b.r, c.r, d.r), mix(a.g, b.g, c.g, d.g), mix(a.b, b.b, c.b, d.b),
-                                                       mix(a.a, b.a, c.a, d.a)};
+            auto color = [&](uint8_t pa, uint8_t pb, uint8_t pc, uint8_t pd) {
+                if (srgb) return srgb::encode(mix(srgb::decode(pa), srgb::decode(pb), srgb::decode(pc), srgb::decode(pd)));
+                return uint8_t(std::min(255.0f, std::floor(mix(float(pa), float(pb), float(pc), float(pd)) + 0.5f)));
+            };
+            const float alpha = mix(float(a.a), float(b.a), float(c.a), float(d.a));
+            dst[size_t(j) * size_t(dw) + size_t(i)] = {color(a.r, b.r, c.r, d.r), color(a.g, b.g, c.g, d.g), color(a.b, b.b, c.b, d.b),
+                                                       uint8_t(std::min(255.0f, std::floor(alpha + 0.5f)))};
         }
     return dst;
 }
@@ -46,7 +52,7 @@ inline float mantissa_of(float x) { return std::bit_cast<float>((std::bit_cast<u
 
 }  // namespace
 
-Texture::Texture(const Image& image) {
+Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpace::Srgb) {
     if (image.width < 1 || image.height < 1) throw std::invalid_argument("texture image is empty");
     // The chain row by row first (downsample reads it so), then into tiles.
     std::vector<std::vector<Rgba8>> rows;
@@ -56,7 +62,7 @@ Texture::Texture(const Image& image) {
     rows.push_back(std::move(base));
     int offset = 0;
     for (int w = image.width, h = image.height;; w = std::max(1, w / 2), h = std::max(1, h / 2)) {
-        if (!levels_.empty()) rows.push_back(downsample(rows.back(), levels_.back().width, levels_.back().height, w, h));
+        if (!levels_.empty()) rows.push_back(downsample(rows.back(), levels_.back().width, levels_.back().height, w, h, srgb_));
         const int tiles_x = (w + 3) / 4, tiles_y = (h + 3) / 4;
         levels_.push_back(Level{w, h, tiles_x, offset});
         offset += tiles_x * tiles_y * 16;
@@ -215,7 +221,7 @@ struct LaneLevels {
 
 }  // namespace
 
-template <bool Wide>
+template <bool Wide, bool Srgb>
 void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
     using simd::select, simd::splat, simd::splat_i, simd::to_float;
     // Which level(s) and filter each lane takes (select_lod).
@@ -271,6 +277,7 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
     const f8 half = select(nearest, splat(0.0f), splat(0.5f));
     const f8 ur = reduce8(u, s.wrap_s), vr = reduce8(v, s.wrap_t);
     const uint32_t* texels = this->texels();
+    const std::array<float, 256>& decode = srgb::tables().decode;
     const bool has_border = s.wrap_s == Wrap::Border || s.wrap_t == Wrap::Border;
     auto at_level = [&](i8 level, std::array<f8, 4>& out) {
         const LaneLevels l = lane_levels(level);
@@ -287,7 +294,13 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
             i8 texel;
             gather<Wide>(texels, has_border ? select(border, splat_i(0), index) : index, texel);
             for (int k = 0; k < 4; ++k) {
-                const f8 value = to_float((texel >> (8 * k)) & 255) * (1.0f / 255.0f);
+                f8 value;
+                if (Srgb && k < 3) {  // decoded texel by texel, before the filter
+                    const i8 byte = (texel >> (8 * k)) & 255;
+                    for (int lane = 0; lane < simd::kLanes; ++lane) value[lane] = decode[size_t(byte[lane])];
+                } else {
+                    value = to_float((texel >> (8 * k)) & 255) * (1.0f / 255.0f);
+                }
                 c[t][size_t(k)] = has_border ? select(border, splat(s.border[k]), value) : value;
             }
         }
@@ -306,7 +319,10 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
 
 // In the CPU's best copy (simd.h).
 void Texture::sample8(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
-    simd::on_best_path([&]<bool Wide>() { sample_lanes<Wide>(u, v, d, s, rgba); });
+    simd::on_best_path([&]<bool Wide>() {
+        if (srgb_) sample_lanes<Wide, true>(u, v, d, s, rgba);
+        else sample_lanes<Wide, false>(u, v, d, s, rgba);
+    });
 }
 
 }  // namespace softraster

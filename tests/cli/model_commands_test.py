@@ -48,6 +48,53 @@ for args, what in [(['--size', '0'], '--size'), (['--size', '20x'], '--size'), (
     r = run(['render', DUCK, '-o', target] + args)
     check('render %s' % args, r.returncode == 2 and what in r.stderr and len(r.stderr.strip().splitlines()) == 1
           and not os.path.exists(target), '%d %r' % (r.returncode, r.stderr))
+for args, what in [(['--color-space', 'rec2020'], '--color-space'), (['--tone-mapping', 'filmic'], '--tone-mapping'),
+                   (['--exposure', '0'], '--exposure')]:
+    target = os.path.join(work, 'bad.png')
+    r = run(['render', BOX, '-o', target] + args)
+    check('render %s' % args, r.returncode == 2 and what in r.stderr and not os.path.exists(target), '%d %r' % (r.returncode, r.stderr))
+
+
+def png_pixels(path):
+    """The RGBA bytes of an 8-bit RGBA PNG as stb writes it (filter bytes per row)."""
+    import zlib
+    data = open(path, 'rb').read()
+    w, h = struct.unpack('>II', data[16:24])
+    idat, at = b'', 8
+    while at < len(data):
+        n, kind = struct.unpack('>I4s', data[at:at + 8])
+        if kind == b'IDAT':
+            idat += data[at + 8:at + 8 + n]
+        at += 12 + n
+    raw, rows, prev = zlib.decompress(idat), [], bytearray(w * 4)
+    for y in range(h):
+        f, row = raw[y * (w * 4 + 1)], bytearray(raw[y * (w * 4 + 1) + 1:(y + 1) * (w * 4 + 1)])
+        for i in range(len(row)):
+            a = row[i - 4] if i >= 4 else 0
+            b, c = prev[i], prev[i - 4] if i >= 4 else 0
+            p = a + b - c
+            pred = [0, a, b, (a + b) // 2, a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else (b if abs(p - b) <= abs(p - c) else c)][f]
+            row[i] = (row[i] + pred) & 255
+        rows.append(row)
+        prev = row
+    return w, h, rows
+
+
+# The color space: sRGB (the default for models) encodes the light, so the lit box is
+# lighter than with --color-space linear; the background keeps the values asked for either way.
+lit = {}
+for space in ('srgb', 'linear'):
+    target = os.path.join(work, 'box_%s.png' % space)
+    r = run(['render', BOX, '-o', target, '--size', '64', '--color-space', space, '--background', '#204060'])
+    check('render --color-space %s' % space, r.returncode == 0, r.stderr)
+    w, h, rows = png_pixels(target)
+    check('background as asked (%s)' % space, tuple(rows[0][0:4]) == (0x20, 0x40, 0x60, 255), tuple(rows[0][0:4]))
+    lit[space] = sum(rows[32][4 * 32:4 * 32 + 3])
+check('sRGB is lighter than linear', lit['srgb'] > lit['linear'] + 30, lit)
+r = run(['render', BOX, '-o', os.path.join(work, 'box_aces.png'), '--size', '64', '--tone-mapping', 'aces', '--exposure', '2'])
+check('render --tone-mapping aces', r.returncode == 0 and png_pixels(os.path.join(work, 'box_aces.png'))[2][32] !=
+      png_pixels(os.path.join(work, 'box_srgb.png'))[2][32], r.stderr)
+
 scene = os.path.join(work, 'scene.json')
 json.dump({'version': 1, 'image': {'width': 8, 'height': 8}, 'camera': {'eye': [0, 0, 3], 'target': [0, 0, 0]},
            'objects': []}, open(scene, 'w'))

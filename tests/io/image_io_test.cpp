@@ -11,6 +11,7 @@
 
 #include "softraster/error.h"
 #include "softraster/io/image_io.h"
+#include "softraster/io/image_write.h"
 
 namespace softraster {
 namespace {
@@ -118,6 +119,29 @@ TEST(ImageIo, BytesInMemoryReadAsFromAFile) {
     EXPECT_THROW(read_image(bytes.substr(0, bytes.size() / 2), "embedded", "png"), InputError);
     EXPECT_THROW(read_image(bytes, "embedded", "xyz"), InputError);
     fs::remove_all(dir);
+}
+
+
+// An EXR picture holds linear light: a linear picture's values / 255, an sRGB picture's
+// decoded (alpha / 255 either way).
+TEST(ImageWrite, ExrHoldsLinearLight) {
+    Image img(2, 1);
+    img.at(0, 0) = {188, 0, 255, 128};
+    img.at(1, 0) = {128, 64, 1, 255};
+    for (ColorSpace space : {ColorSpace::Linear, ColorSpace::Srgb}) {
+        const fs::path path = temp_dir() / (space == ColorSpace::Srgb ? "srgb.exr" : "linear.exr");
+        write_picture(img, path, space);
+        auto in = OIIO::ImageInput::open(path.string());
+        ASSERT_TRUE(in) << OIIO::geterror();
+        std::vector<float> px(8);
+        ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, px.data()));
+        for (int p = 0; p < 2; ++p)
+            for (int c = 0; c < 4; ++c) {
+                const uint8_t v = (&img.at(p, 0).r)[c];
+                const float want = space == ColorSpace::Srgb && c < 3 ? srgb::decode(v) : float(v) / 255.0f;
+                EXPECT_EQ(px[size_t(4 * p + c)], want) << p << " " << c;
+            }
+    }
 }
 
 }  // namespace

@@ -1,10 +1,13 @@
 // Output merge: every depth compare function, depth writes on and off, and the blend modes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <vector>
 
+#include "softraster/pipeline/resolve.h"
 #include "test_support.h"
 
 using namespace softraster;
@@ -217,4 +220,95 @@ TEST(Blend, EquationsFactorsAndMask) {
     EXPECT_EQ(run(s, d), (Rgba8{uint8_t(mul_unorm8(102, 128)), 0, 51, 153}));
     st.color_mask = 0b1010;  // green and alpha only
     EXPECT_EQ(run(s, d), (Rgba8{200, 0, 51, 153}));
+}
+
+// An sRGB framebuffer: opaque colors stored encoded, blending in linear light (the float
+// formula on decoded values, then encoded), masked channels kept; a clear encodes too.
+TEST(Blend, SrgbBlendsInLinearLight) {
+    RenderState st;
+    st.blend = BlendMode::Alpha;
+    const BlendSettings alpha(st, ColorSpace::Srgb);
+    // Half white over black: half the light, which encodes to 188 (8-bit blending gives 128).
+    EXPECT_EQ(blend(alpha, glm::vec4(1, 1, 1, 0.5f), Rgba8{0, 0, 0, 255}), (Rgba8{188, 188, 188, 255}));
+    EXPECT_EQ(blend(BlendSettings(st), glm::vec4(1, 1, 1, 0.5f), Rgba8{0, 0, 0, 255}).r, 128);
+    auto encoded = [](double l) {
+        l = std::clamp(l, 0.0, 1.0);
+        return int(std::floor(255 * (l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1 / 2.4) - 0.055) + 0.5));
+    };
+    auto decoded = [](int k) {
+        const double c = k / 255.0;
+        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    };
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-0.1f, 1.1f);
+    st.blend = BlendMode::Custom;
+    st.blend_equation = {BlendEquation::Add, BlendEquation::Add, BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha,
+                         BlendFactor::One, BlendFactor::OneMinusSrcAlpha, glm::vec4(0.0f)};
+    for (int trial = 0; trial < 3000; ++trial) {
+        const glm::vec4 s(u(rng), u(rng), u(rng), std::clamp(u(rng), 0.0f, 1.0f));
+        const Rgba8 d{uint8_t(rng() % 256), uint8_t(rng() % 256), uint8_t(rng() % 256), uint8_t(rng() % 256)};
+        const Rgba8 got = blend(BlendSettings(st, ColorSpace::Srgb), s, d);
+        const double a = s.a;
+        auto want = [&](float sc, uint8_t dc) { return encoded(std::clamp(double(sc), 0.0, 1.0) * a + decoded(dc) * (1 - a)); };
+        // (float arithmetic against double: a rounding boundary may fall between them)
+        ASSERT_NEAR(got.r, want(s.r, d.r), 1) << trial;
+        ASSERT_NEAR(got.b, want(s.b, d.b), 1) << trial;
+        ASSERT_NEAR(got.a, std::floor(255 * (a + d.a / 255.0 * (1 - a)) + 0.5), 1) << trial;
+    }
+    st.color_mask = 0b0101;  // red and blue
+    const Rgba8 masked = blend(BlendSettings(st, ColorSpace::Srgb), glm::vec4(1, 1, 1, 0.5f), Rgba8{0, 7, 0, 9});
+    EXPECT_EQ(masked, (Rgba8{188, 7, 188, 9}));
+    // Opaque: the color encoded once.
+    st = RenderState{};
+    Rgba8 samples[4] = {};
+    merge_fragment<4, false>(BlendSettings(st, ColorSpace::Srgb), samples, 0b0110, glm::vec4(0.5f, 0.0f, 1.0f, 0.5f));
+    EXPECT_EQ(samples[1], (Rgba8{188, 0, 255, 128}));
+    EXPECT_EQ(samples[0], (Rgba8{}));
+    Framebuffer fb(2, 2, 1, ColorSpace::Srgb);
+    fb.clear_color(glm::vec4(0.5f, 0.5f, 0.5f, 0.5f));
+    EXPECT_EQ(fb.color_data()[3], (Rgba8{188, 188, 188, 128}));
+}
+
+// The sRGB resolve and the supersampling filter average in linear light: half the samples
+// white and half black resolve to 188 (linear buffers: 128).
+TEST(Resolve, SrgbAveragesInLinearLight) {
+    for (int n : {2, 4, 8, 16}) {
+        for (ColorSpace space : {ColorSpace::Linear, ColorSpace::Srgb}) {
+            Framebuffer fb(3, 1, n, space);
+            for (int s = 0; s < n; ++s) fb.color_data()[fb.sample_index(1, 0, s)] = s % 2 ? Rgba8{255, 255, 255, 255} : Rgba8{0, 0, 0, 0};
+            const Image img = fb.read_pixels();
+            EXPECT_EQ(img.at(1, 0), space == ColorSpace::Srgb ? (Rgba8{188, 188, 188, 128}) : (Rgba8{128, 128, 128, 128})) << n;
+            EXPECT_EQ(img.at(0, 0), (Rgba8{}));
+        }
+    }
+    Image big(2, 2);
+    big.at(0, 0) = big.at(1, 1) = {255, 255, 255, 255};
+    EXPECT_EQ(downsample_box(big, 2, ColorSpace::Srgb).at(0, 0), (Rgba8{188, 188, 188, 128}));
+    EXPECT_EQ(downsample_box(big, 2).at(0, 0), (Rgba8{128, 128, 128, 128}));
+}
+
+// Every back end stores an sRGB framebuffer's colors the same way: the fast one at 1 and 4
+// samples, the general one (a stencil test; 8 samples) and blending (general, linear light).
+TEST(Blend, SrgbFramebufferThroughEveryBackEnd) {
+    std::vector<ClipVertexIn> v = {{window_to_clip(0, 0, W, H, 0.5f), 0}, {window_to_clip(W, 0, W, H, 0.5f), 0},
+                                   {window_to_clip(W, H, W, H, 0.5f), 0}, {window_to_clip(0, H, W, H, 0.5f), 0}};
+    for (int samples : {1, 4, 8})
+        for (bool stencil : {false, true}) {
+            Framebuffer fb(W, H, samples, ColorSpace::Srgb);
+            Context ctx(fb);
+            ctx.clear(glm::vec4(0, 0, 0, 1));
+            ctx.state.cull = CullMode::None;
+            ctx.state.stencil_test = stencil;
+            draw(ctx, ConstantColorShader{glm::vec4(0.5f, 0.2f, 1.0f, 1.0f)}, v, {0, 1, 2, 0, 2, 3});
+            ctx.state.blend = BlendMode::Alpha;
+            ctx.state.depth_test = false;
+            draw(ctx, ConstantColorShader{glm::vec4(0.0f, 0.0f, 0.0f, 0.5f)}, v, {0, 1, 2});  // darkens the lower right half
+            const Image img = ctx.read_pixels();
+            // One corner off the diagonal is covered by both draws, the other by the first only:
+            // 0.5 of (0.5, 0.2, 1) is 0.25, 0.1, 0.5 of the light.
+            const Rgba8 light{188, 124, 255, 255}, dark{137, 89, 188, 255};
+            const Rgba8 a = img.at(W - 1, 0), b = img.at(0, H - 1);
+            EXPECT_TRUE((a == light && b == dark) || (a == dark && b == light))
+                << samples << " " << stencil << ": " << int(a.r) << " " << int(b.r);
+        }
 }

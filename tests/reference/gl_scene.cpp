@@ -162,19 +162,33 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
     const glm::mat4 view = softraster::view_matrix(scene.camera);
     const glm::mat4 proj = softraster::projection_matrix(scene.camera, scene.width, scene.height);
     std::map<const softraster::Texture*, GLuint> textures;
+    const std::string tone_defines = "#define TONE_MAPPING " + std::to_string(int(scene.tone_mapping.active())) +
+                                     "\n#define TONE_CURVE " + std::to_string(int(scene.tone_mapping.curve)) + "\n";
     auto program = [&](int shading, bool textured, int lights, bool cutoff, bool affine, const std::string& maps = "") {
         const std::string key = maps + std::to_string(shading) + " " + std::to_string(int(textured)) + std::to_string(int(cutoff)) +
                                 std::to_string(int(affine));
         GLuint& p = programs_[key];
-        if (!p) p = link_program(maps, shading, textured, lights, int(scene.lights.punctual.size()), cutoff, affine);
+        if (!p) p = link_program(maps + tone_defines, shading, textured, lights, int(scene.lights.punctual.size()), cutoff, affine);
         return p;
     };
     // Wide: as 16-bit texels holding the same values (v · 257 / 65535 = v / 255). llvmpipe
     // filters 8-bit textures in 8-bit arithmetic, so a filtered lookup comes back rounded to
     // 1/255; the spec's filter (and softraster's) is exact. Colors do not show the
     // difference, normal maps do (lighting magnifies a normal's error), so they go wide.
+    // An sRGB texture goes up as GL_SRGB8_ALPHA8 with its stored (encoded) bytes: GL decodes
+    // each texel before filtering and glGenerateMipmap averages in linear light.
     auto upload_texture = [&](const softraster::Texture* t, bool wide = false) {
         GLuint& tex = textures[t];
+        if (!tex && t->srgb()) {
+            std::vector<softraster::Rgba8> bytes(size_t(t->width()) * size_t(t->height()));
+            for (int j = 0; j < t->height(); ++j)
+                for (int i = 0; i < t->width(); ++i) bytes[size_t(j) * size_t(t->width()) + size_t(i)] = t->stored(0, i, j);
+            glGenTextures(1, &tex);
+            glBindTexture(GL_TEXTURE_2D, tex);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, t->width(), t->height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+            glGenerateMipmap(GL_TEXTURE_2D);
+        }
         if (!tex) {
             // Texel row 0 is the bottom of the picture: what GL calls t = 0.
             std::vector<uint16_t> texels(size_t(t->width()) * size_t(t->height()) * 4);
@@ -357,6 +371,7 @@ void GlScene::draw_frame() const {
         }
         glFrontFace(o.front_face == softraster::FrontFace::CCW ? GL_CW : GL_CCW);
         glUniform1f(loc("u_alpha_cutoff"), m.alpha_cutoff.value_or(0.0f));
+        glUniform1f(loc("u_exposure"), scene_.tone_mapping.exposure);
         const softraster::ObjectState& st = o.state;
         const bool blended = m.blend != softraster::BlendMode::Opaque && !d->wire;
         set_enabled(GL_DEPTH_TEST, st.depth_test);

@@ -95,6 +95,7 @@ uniform vec3 u_ambient;
 uniform vec3 u_to_light[8];
 uniform vec3 u_light_color[8];
 uniform float u_alpha_cutoff;
+uniform float u_exposure;
 out vec4 frag;
 #if SHADING == 8
 // glTF 2.0 appendix B: Schlick's Fresnel, GGX, the height-correlated Smith visibility; a
@@ -201,6 +202,16 @@ void main() {
     }
 #endif
     frag = vec4(base.rgb * intensity + spec, base.a);
+#endif
+#if TONE_MAPPING
+    // TONE_CURVE: 0 none, 1 Reinhard, 2 ACES (Narkowicz's fit)
+    vec3 x = u_exposure * frag.rgb;
+#if TONE_CURVE == 1
+    x = x / (1.0 + x);
+#elif TONE_CURVE == 2
+    x = clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+#endif
+    frag.rgb = x;
 #endif
 #endif
 #if CUTOFF

@@ -5,6 +5,7 @@
 //   glref SCENE.json --time --frames 20 --warmup 3     (one JSON line; LP_NUM_THREADS respected)
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -19,11 +20,38 @@
 #include "softraster/error.h"
 #include "softraster/io/image_io.h"
 
-// Each output channel: floor(mean + 0.5) of the k x k block's 8-bit values.
-softraster::Image box_filter(const softraster::Image& in, int k) {
+// sRGB's transfer function, written out here in double precision (the reference does not
+// use softraster's tables).
+double srgb_decode(uint8_t k) {
+    const double c = k / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+uint8_t srgb_encode(double l) {
+    l = std::clamp(l, 0.0, 1.0);
+    const double c = l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
+    return uint8_t(std::floor(255.0 * c + 0.5));
+}
+
+// Each output channel: floor(mean + 0.5) of the k x k block's 8-bit values (sRGB pictures:
+// r, g, b averaged in linear light).
+softraster::Image box_filter(const softraster::Image& in, int k, bool srgb) {
     softraster::Image out(in.width / k, in.height / k);
     for (int y = 0; y < out.height; ++y)
         for (int x = 0; x < out.width; ++x) {
+            if (srgb) {  // in linear light: the mean of the decoded values, encoded
+                double sum[3] = {0, 0, 0};
+                int alpha = 0;
+                for (int j = 0; j < k; ++j)
+                    for (int i = 0; i < k; ++i) {
+                        const softraster::Rgba8 c = in.pixels[size_t((y * k + j) * in.width + x * k + i)];
+                        sum[0] += srgb_decode(c.r), sum[1] += srgb_decode(c.g), sum[2] += srgb_decode(c.b);
+                        alpha += c.a;
+                    }
+                const int n = k * k;
+                out.pixels[size_t(y * out.width + x)] = {srgb_encode(sum[0] / n), srgb_encode(sum[1] / n), srgb_encode(sum[2] / n),
+                                                         uint8_t((alpha + n / 2) / n)};
+                continue;
+            }
             int sum[4] = {0, 0, 0, 0};
             for (int j = 0; j < k; ++j)
                 for (int i = 0; i < k; ++i) {
@@ -52,7 +80,8 @@ int main(int argc, char** argv) {
         const softraster::Scene scene = softraster::load_scene(scene_path);
         // Supersampling: drawn at k times the size, then box-filtered here (below).
         const int k = scene.supersample;
-        glref::OsmesaTarget target(scene.width * k, scene.height * k, scene.samples);
+        const bool srgb = scene.color_space == softraster::ColorSpace::Srgb;
+        glref::OsmesaTarget target(scene.width * k, scene.height * k, scene.samples, srgb);
         const glref::GlScene gl_scene(scene);
         if (!time_mode) {
             if (out.empty()) throw softraster::InputError("glref: -o OUT.png is required");
@@ -60,7 +89,7 @@ int main(int argc, char** argv) {
             gl_scene.draw_frame();
             target.resolve();
             glFinish();
-            softraster::write_png(box_filter(target.read_pixels(), k), out);
+            softraster::write_png(box_filter(target.read_pixels(), k, srgb), out);
             return 0;
         }
         std::vector<double> ms;

@@ -21,7 +21,8 @@ void check_complete(const char* what) {
 
 }  // namespace
 
-OsmesaTarget::OsmesaTarget(int width, int height, int samples) : width_(width), height_(height), samples_(samples) {
+OsmesaTarget::OsmesaTarget(int width, int height, int samples, bool srgb)
+    : width_(width), height_(height), samples_(samples), srgb_(srgb) {
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                            OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
     ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
@@ -34,7 +35,8 @@ OsmesaTarget::OsmesaTarget(int width, int height, int samples) : width_(width), 
 
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    color_ = make_renderbuffer(GL_RGBA8, samples, width, height);
+    const GLenum color_format = srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+    color_ = make_renderbuffer(color_format, samples, width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
     // 32-bit float depth and 8-bit stencil, as softraster's buffers.
     depth_ = make_renderbuffer(GL_DEPTH32F_STENCIL8, samples, width, height);
@@ -43,7 +45,7 @@ OsmesaTarget::OsmesaTarget(int width, int height, int samples) : width_(width), 
     if (samples > 1) {
         glGenFramebuffers(1, &resolve_fbo_);
         glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
-        resolve_color_ = make_renderbuffer(GL_RGBA8, 1, width, height);
+        resolve_color_ = make_renderbuffer(color_format, 1, width, height);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color_);
         check_complete("resolve target");
     }
@@ -66,6 +68,10 @@ std::string OsmesaTarget::renderer() const {
 
 void OsmesaTarget::bind_for_drawing() {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    // Encoding on write, blending in linear light, clears encoded and the resolve averaging
+    // in linear light (GL 4.6, 17.3.7 and 18.3.1).
+    if (srgb_) glEnable(GL_FRAMEBUFFER_SRGB);
+    else glDisable(GL_FRAMEBUFFER_SRGB);
     glViewport(0, 0, width_, height_);
 }
 

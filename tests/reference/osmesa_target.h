@@ -1,5 +1,6 @@
 // An off-screen OpenGL 3.3 core context on Mesa's llvmpipe (OSMesa), rendering into a
-// framebuffer object with an RGBA8 color and a 32-bit float depth attachment, 1 or 4 samples.
+// framebuffer object with an RGBA8 (or SRGB8_ALPHA8, with GL_FRAMEBUFFER_SRGB on) color and a
+// 32-bit float depth attachment, 1 or 4 samples.
 // Test-only: the independent reference that softraster's pictures are checked against.
 #pragma once
 #define GL_GLEXT_PROTOTYPES 1
@@ -17,7 +18,7 @@ class OsmesaTarget {
 public:
     // Throws std::runtime_error when no context can be made, or when GL_RENDERER is not
     // llvmpipe (the reference must be the renderer we claim to match).
-    OsmesaTarget(int width, int height, int samples);
+    OsmesaTarget(int width, int height, int samples, bool srgb = false);
     ~OsmesaTarget();
     OsmesaTarget(const OsmesaTarget&) = delete;
     OsmesaTarget& operator=(const OsmesaTarget&) = delete;
@@ -29,6 +30,7 @@ public:
 
 private:
     int width_, height_, samples_;
+    bool srgb_;
     OSMesaContext ctx_ = nullptr;
     std::string dummy_;  // OSMesa needs a default buffer to make the context current
     GLuint fbo_ = 0, color_ = 0, depth_ = 0;        // drawing target

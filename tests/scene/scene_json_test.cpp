@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "softraster/error.h"
+#include "softraster/io/image_io.h"
 #include "softraster/scene/scene.h"
 #include "softraster/scene/scene_renderer.h"
 #include "test_support.h"
@@ -158,4 +159,52 @@ TEST(SceneJson, LinesPointsAndWireframes) {
     EXPECT_EQ(wire.uniforms.texture, nullptr);
     EXPECT_FLOAT_EQ(wire.state.line_width, 2);
     EXPECT_EQ(r.triangle_count(), 12u);  // the surface only
+}
+
+// Version 2's color keys: the color space, the tone curve and the exposure; the color
+// textures (texture, emissive_texture) take the scene's color space, the data maps never.
+TEST(SceneJson, ColorSpaceAndToneMapping) {
+    auto v2 = [](const std::string& json) {
+        std::string s = json;
+        return s.replace(s.find("\"version\": 1"), 12, "\"version\": 2");
+    };
+    const Scene plain = load_scene(write_scene("plain.json", v2(kMinimal)));
+    EXPECT_EQ(plain.color_space, ColorSpace::Linear);
+    EXPECT_FALSE(plain.tone_mapping.active());
+    const std::string keys = "\"height\": 16, \"color_space\": \"srgb\", \"tone_mapping\": \"aces\", \"exposure\": 2.5}";
+    const Scene s = load_scene(write_scene("color.json", v2(with("\"height\": 16}", keys))));
+    EXPECT_EQ(s.color_space, ColorSpace::Srgb);
+    EXPECT_EQ(s.tone_mapping.curve, ToneCurve::Aces);
+    EXPECT_EQ(s.tone_mapping.exposure, 2.5f);
+    EXPECT_TRUE(SceneRenderer(s, 1).make_framebuffer().srgb());
+
+    const auto dir = test::write_temp_file("softraster_scene_tests", "tex.png", "").parent_path();
+    Image img(2, 2);
+    img.pixels.assign(4, Rgba8{255, 255, 255, 255});
+    img.at(1, 0) = img.at(0, 1) = {0, 0, 0, 255};
+    write_png(img, dir / "tex.png");
+    const std::string textured = std::string(R"({"version": 2, "image": {"width": 8, "height": 8, "color_space": "srgb"},
+      "camera": {"eye": [0, 0, 3], "target": [0, 0, 0]}, "objects": [{"builtin": {"type": "cube"}, "material": {"shading": "pbr",
+      "texture": "tex.png", "emissive_texture": "tex.png", "metallic_roughness_texture": "tex.png", "occlusion_texture": "tex.png"}}]})");
+    const Scene t = load_scene(write_scene("textured.json", textured));
+    const Material& m = t.objects[0].material;
+    EXPECT_TRUE(m.texture->srgb());
+    EXPECT_EQ(m.texture, m.emissive_texture);  // one texture per file and color space
+    EXPECT_FALSE(m.metallic_roughness_texture->srgb());
+    EXPECT_EQ(m.metallic_roughness_texture, m.occlusion_texture);
+    EXPECT_EQ(m.texture->stored(1, 0, 0).r, 188);  // its mipmap averaged in linear light
+
+    const std::pair<std::string, const char*> errors[] = {
+        {with("\"height\": 16}", "\"height\": 16, \"color_space\": \"srgb\"}"), "image.color_space: a version 2 key in a version 1 file"},
+        {with("\"height\": 16}", "\"height\": 16, \"exposure\": 2}"), "image.exposure"},
+        {v2(with("\"height\": 16}", "\"height\": 16, \"color_space\": \"rec2020\"}")), "image.color_space: unknown value 'rec2020'"},
+        {v2(with("\"height\": 16}", "\"height\": 16, \"tone_mapping\": \"filmic\"}")), "image.tone_mapping: unknown value 'filmic'"},
+        {v2(with("\"height\": 16}", "\"height\": 16, \"exposure\": 0}")), "image.exposure: value 0 out of range"},
+        {v2(with("\"height\": 16}", "\"height\": 16, \"exposure\": -1}")), "image.exposure: value -1 out of range"},
+        {v2(with("\"height\": 16}", "\"height\": 16, \"exposure\": \"2\"}")), "image.exposure: expected a number"},
+    };
+    for (const auto& [json, expected] : errors) {
+        const std::string err = error_of(json);
+        EXPECT_NE(err.find(expected), std::string::npos) << "got: " << err << "\nwanted: " << expected;
+    }
 }

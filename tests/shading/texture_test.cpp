@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <utility>
 
 #include <gtest/gtest.h>
@@ -68,11 +69,11 @@ TEST(Texture, NonFiniteCoordinatesAreSafe) {
 
 namespace {
 // w x h texels, every texel the same gray per level test below, or a pattern.
-Texture pattern_texture(int w, int h) {
+Texture pattern_texture(int w, int h, ColorSpace color = ColorSpace::Linear) {
     Image img(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) img.at(x, y) = {uint8_t(x * 255 / std::max(1, w - 1)), uint8_t(y * 37 % 256), uint8_t((x + y) % 2 ? 250 : 10), 255};
-    return Texture(img);
+    return Texture(img, color);
 }
 UvDerivatives isotropic(float texels_per_pixel, int size) {
     const float d = texels_per_pixel / float(size);
@@ -99,6 +100,35 @@ TEST(Texture, MipmapChainAveragesTwoByTwo) {
                             sum += int(std::lround(t.texel(level - 1, std::min(2 * i + di, pw - 1), std::min(2 * j + dj, ph - 1))[c] * 255.0f));
                     EXPECT_EQ(std::lround(t.texel(level, i, j)[c] * 255.0f), (sum + 2) / 4) << level << " " << i << "," << j << " " << c;
                 }
+            }
+}
+
+// An sRGB texture: texels read decoded, stored bytes kept; its mipmaps average the 2x2
+// texels in linear light and store the encoded mean (black and white make 188, not 128).
+TEST(Texture, SrgbTexelsAreDecodedAndTheirMipmapsAveragedInLinearLight) {
+    Image img(2, 2);
+    img.at(0, 0) = img.at(1, 1) = {255, 255, 255, 255};
+    img.at(1, 0) = img.at(0, 1) = {0, 0, 0, 0};
+    const Texture linear(img), srgb(img, ColorSpace::Srgb);
+    EXPECT_TRUE(srgb.srgb());
+    EXPECT_EQ(linear.stored(1, 0, 0), (Rgba8{128, 128, 128, 128}));
+    EXPECT_EQ(srgb.stored(1, 0, 0), (Rgba8{188, 188, 188, 128}));  // alpha stays linear
+    EXPECT_EQ(srgb.texel(1, 0, 0).r, srgb::decode(188));
+    EXPECT_EQ(srgb.texel(1, 0, 0).a, 128.0f / 255.0f);
+    // A bilinear lookup halfway between a white and a black texel: half the light.
+    EXPECT_FLOAT_EQ(srgb.sample(glm::vec2(0.5f, 0.25f), Filter::Bilinear, Wrap::Clamp).r, 0.5f);
+    EXPECT_FLOAT_EQ(linear.sample(glm::vec2(0.5f, 0.25f), Filter::Bilinear, Wrap::Clamp).r, 0.5f);
+    // Each mip texel of a larger texture: the encoded mean of its four decoded texels.
+    const Texture t = pattern_texture(8, 4, ColorSpace::Srgb);
+    for (int j = 0; j < t.level_height(1); ++j)
+        for (int i = 0; i < t.level_width(1); ++i)
+            for (int c = 0; c < 3; ++c) {
+                double sum = 0;
+                for (int dj = 0; dj < 2; ++dj)
+                    for (int di = 0; di < 2; ++di) sum += t.texel(0, 2 * i + di, 2 * j + dj)[c];
+                const double l = sum / 4, e = l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1 / 2.4) - 0.055;
+                const Rgba8 s = t.stored(1, i, j);
+                EXPECT_NEAR((&s.r)[c], 255 * e, 0.5 + 1e-3) << i << "," << j << " " << c;
             }
 }
 
@@ -183,8 +213,9 @@ TEST(Texture, EightLookupsAtOnceEqualOneAtATime) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> coord(-3.0f, 3.0f), log_scale(-12.0f, 4.0f), unit(-1.0f, 1.0f);
     const float odd[] = {NAN, INFINITY, -INFINITY, 3e38f, -2e7f, 1.0f, 0.0f, -0.0f};
-    for (const auto& [w, h] : {std::pair{37, 21}, std::pair{64, 64}, std::pair{1, 5}}) {
-        const Texture t = pattern_texture(w, h);
+    for (const auto& [w, h, color] : {std::tuple{37, 21, ColorSpace::Linear}, std::tuple{64, 64, ColorSpace::Linear},
+                                      std::tuple{1, 5, ColorSpace::Linear}, std::tuple{37, 21, ColorSpace::Srgb}}) {
+        const Texture t = pattern_texture(w, h, color);
         for (bool generic : {false, true}) {
             simd::use_generic_path(generic);
             for (Filter mag : {Filter::Nearest, Filter::Bilinear})

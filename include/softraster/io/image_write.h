@@ -3,7 +3,8 @@
 //   .png  8-bit RGBA color, 8-bit gray (stb_image_write), 16-bit gray (libpng)
 //   .tga  8-bit RGBA (stb_image_write)
 //   .ppm  8-bit RGB, alpha dropped (libnetpbm)
-//   .exr  32-bit float channels (OpenEXR), linear: color as c / 255, depth as stored
+//   .exr  32-bit float channels (OpenEXR), linear: color as c / 255 (an sRGB picture's r, g, b
+//         decoded, srgb.h), depth as stored
 // Every file is written to a temporary name and renamed into place, so a failure never
 // leaves a partial file. Errors throw std::runtime_error naming the file.
 #pragma once
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "softraster/image.h"
+#include "softraster/srgb.h"
 
 namespace softraster {
 
@@ -20,8 +22,9 @@ enum class PictureFormat { Png, Tga, Ppm, Exr };
 // The format a path's extension names (case-insensitive), if any.
 std::optional<PictureFormat> picture_format(const std::filesystem::path& path);
 
-// A color picture, in the format of the path's extension.
-void write_picture(const Image& image, const std::filesystem::path& path);
+// A color picture, in the format of the path's extension; `color` says how its values are
+// encoded (EXR stores linear light).
+void write_picture(const Image& image, const std::filesystem::path& path, ColorSpace color = ColorSpace::Linear);
 
 // 8-bit gray: PNG.
 void write_gray(const GrayImage<uint8_t>& image, const std::filesystem::path& path);

@@ -113,13 +113,14 @@ private:
 
 class ClearCommand final : public Command {
 public:
-    ClearCommand(const glm::vec4& color, float depth, uint8_t stencil = 0) : color_(quantize_rgba8(color)), depth_(depth), stencil_(stencil) {}
+    ClearCommand(const glm::vec4& color, float depth, uint8_t stencil = 0) : color_(color), depth_(depth), stencil_(stencil) {}
     uint64_t draw_tile(int, const Rect& r, const DrawTarget& target) override {
         Framebuffer& fb = *target.fb;
+        const Rgba8 stored = quantize_rgba8(color_, fb.color_space());  // (as glClear with GL_FRAMEBUFFER_SRGB)
         const size_t n = size_t(r.x1 - r.x0) * size_t(fb.samples());
         static_assert(sizeof(Rgba8) == sizeof(uint32_t));
         uint32_t color;  // filled as 32-bit words, which vectorizes (four bytes do not)
-        std::memcpy(&color, &color_, sizeof color);
+        std::memcpy(&color, &stored, sizeof color);
         // The tile's rows are far apart in memory, out of reach of the hardware prefetcher:
         // ask for the rows a few ahead, or each row's writes wait for memory one after another.
         constexpr int kAhead = 4;
@@ -140,7 +141,7 @@ public:
     }
 
 private:
-    Rgba8 color_;
+    glm::vec4 color_;
     float depth_;
     uint8_t stencil_;
 };
@@ -239,7 +240,8 @@ public:
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
         const Rect rect = this->scissored(tile_rect, state_);
         if (rect.empty()) return 0;
-        const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), BlendSettings(state_), triangles(), *target.fb};
+        const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), BlendSettings(state_, target.fb->color_space()), triangles(),
+                                                         *target.fb};
         const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
         return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
     }
@@ -273,9 +275,9 @@ class GeneralTriangleCommand final : public TriangleFrontEnd<S, kMaxSamples, T> 
     using Base::shader_, Base::state_, Base::triangles;
 
 public:
-    GeneralTriangleCommand(const S& shader, const RenderState& state, int samples, std::span<const typename S::Vertex> vertices,
-                           std::span<const uint32_t> indices)
-        : Base(shader, state, vertices, indices), ops_(state, samples, !PureShader<S>) {}
+    GeneralTriangleCommand(const S& shader, const RenderState& state, int samples, ColorSpace color,
+                           std::span<const typename S::Vertex> vertices, std::span<const uint32_t> indices)
+        : Base(shader, state, vertices, indices), ops_(state, samples, !PureShader<S>, color) {}
 
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
         const Rect rect = this->scissored(tile_rect, state_);

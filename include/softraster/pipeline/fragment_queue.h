@@ -50,6 +50,7 @@ public:
     void start(const S& shader, Framebuffer& fb) {
         shader_ = &shader;
         color_ = fb.color_data();
+        color_space_ = fb.color_space();
         count_ = 0;
     }
 
@@ -127,7 +128,7 @@ private:
         for (size_t k = 0; k < size_t(N); ++k) var[k] = load(var_[k]);
         std::array<f8, 4> rgba;
         shader_->fragment_batch(var, load(z_), front_facing_, rgba);
-        const i8 packed = quantize_pack_rgba8(rgba);
+        const i8 packed = quantize_pack_rgba8(rgba, color_space_);
         for (int l = 0; l < count; ++l) {
             const size_t slot = size_t(first + l);
             Rgba8 c;
@@ -144,6 +145,7 @@ private:
 
     const S* shader_ = nullptr;
     Rgba8* color_ = nullptr;
+    ColorSpace color_space_ = ColorSpace::Linear;
     int count_ = 0;
     bool front_facing_ = true;
     // Not initialized: slots are written before they are read (lanes past the last fragment

@@ -77,8 +77,8 @@ struct FragmentOps {
     bool alpha_to_coverage = false;
     bool early = false;  // the tests before the shader
 
-    FragmentOps(const RenderState& st, int sample_count, bool shader_may_discard)
-        : tests(st), blend(st), samples(sample_count), alpha_test(st.alpha_test), alpha_cutoff(st.alpha_cutoff),
+    FragmentOps(const RenderState& st, int sample_count, bool shader_may_discard, ColorSpace color = ColorSpace::Linear)
+        : tests(st), blend(st, color), samples(sample_count), alpha_test(st.alpha_test), alpha_cutoff(st.alpha_cutoff),
           alpha_to_coverage(st.alpha_to_coverage && sample_count > 1),
           early(!shader_may_discard && !alpha_test && !alpha_to_coverage) {}
 };
@@ -118,7 +118,7 @@ void general_fragment(const S& shader, const FragmentOps& ops, Framebuffer& fb, 
     if (!ops.blend.color_mask) return;
     Rgba8* c = fb.color_data() + base;
     if (ops.blend.replace) {  // quantized once for all samples, no blend arithmetic
-        const Rgba8 q = quantize_rgba8(color);
+        const Rgba8 q = quantize_rgba8(color, ops.blend.color_space);
         for (int s = 0; s < ops.samples; ++s)
             if (pass & (1u << s)) c[s] = q;
         return;

@@ -104,7 +104,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
     constexpr int N = kVaryingCount<typename S::Varyings>;
     using V = typename S::Varyings;
     const int width = fb.width();
-    const BlendSettings blend(state);
+    const BlendSettings blend(state, fb.color_space());
     uint64_t shaded = 0;
     for_each_triangle_setup<Samples, true, kFlatVaryings<S>>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
         const uint32_t me = owner_id(draw, id);

@@ -8,6 +8,10 @@
 //   additive: rgb = s.rgb s.a + d.rgb,            a = d.a
 // (Float arithmetic quantized once differs by one level here and there; over many layers
 // those differences add up against the reference.)
+//
+// An sRGB framebuffer (framebuffer.h) stores r, g, b encoded (srgb.h): an opaque fragment's
+// color is encoded as it is stored, and blending happens in linear light, in float
+// (blend_linear below; those draws take the general back end, see needs_general_back_end).
 #pragma once
 #include <algorithm>
 
@@ -69,11 +73,13 @@ struct BlendSettings {
     Rgba8 constant;
     uint8_t color_mask = 0xf;  // bits r, g, b, a
     bool replace = false;      // the source replaces every channel: no arithmetic needed
-    explicit BlendSettings(const RenderState& st)
+    ColorSpace color_space;    // the framebuffer's
+    explicit BlendSettings(const RenderState& st, ColorSpace color = ColorSpace::Linear)
         : eq(st.blend == BlendMode::Custom ? st.blend_equation : blend_preset(st.blend)),
           constant(quantize_rgba8(eq.constant)),
           color_mask(st.color_write ? st.color_mask : 0),
-          replace(st.blend == BlendMode::Opaque && color_mask == 0xf) {
+          replace(st.blend == BlendMode::Opaque && color_mask == 0xf),
+          color_space(color) {
         // A partial color mask takes the general arithmetic (blend_channels), which keeps
         // the masked channels; the presets' own paths write all four.
         mode = color_mask != 0 && color_mask != 0xf ? BlendMode::Custom : st.blend;
@@ -81,10 +87,14 @@ struct BlendSettings {
 };
 
 // One channel's factor and result, for one pixel (T = int) or eight (T = simd::i8, lane by
-// lane): the same code either way.
+// lane): the same code either way. (T = float: the linear-light factors of an sRGB
+// framebuffer, on values in [0, 1].)
 template <class T>
 inline T blend_factor(BlendFactor f, const std::array<T, 4>& s, const std::array<T, 4>& d, const std::array<T, 4>& k, size_t c) {
-    const T zero{}, one = zero + 255;
+    const T zero{};
+    T one;
+    if constexpr (std::is_same_v<T, float>) one = 1.0f;
+    else one = zero + 255;
     switch (f) {
         case BlendFactor::Zero: return zero;
         case BlendFactor::One: return one;
@@ -141,8 +151,41 @@ inline std::array<T, 4> blend_channels(const BlendSettings& b, const std::array<
     return out;
 }
 
+// Blending into an sRGB framebuffer, in linear light and in float (as llvmpipe does for
+// SRGB8_ALPHA8 targets): source and constant clamped to [0, 1], the destination's r, g, b
+// decoded and its alpha / 255, the factors and equations on those values, each result
+// clamped to [0, 1] and stored as the framebuffer stores a color (masked channels keep d).
+inline Rgba8 blend_linear(const BlendSettings& b, const glm::vec4& src, Rgba8 dst) {
+    auto clamp01 = [](float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; };  // NaN -> 0
+    const std::array<float, 4> s{clamp01(src.r), clamp01(src.g), clamp01(src.b), clamp01(src.a)};
+    const std::array<float, 4> d{srgb::decode(dst.r), srgb::decode(dst.g), srgb::decode(dst.b), float(dst.a) * (1.0f / 255.0f)};
+    const std::array<float, 4> k{clamp01(b.eq.constant.r), clamp01(b.eq.constant.g), clamp01(b.eq.constant.b), clamp01(b.eq.constant.a)};
+    glm::vec4 out;
+    for (size_t c = 0; c < 4; ++c) {
+        const bool alpha = c == 3;
+        const float sf = blend_factor(alpha ? b.eq.src_alpha : b.eq.src_rgb, s, d, k, c);
+        const float df = blend_factor(alpha ? b.eq.dst_alpha : b.eq.dst_rgb, s, d, k, c);
+        float v = s[c];
+        switch (alpha ? b.eq.alpha : b.eq.rgb) {
+            case BlendEquation::Add: v = s[c] * sf + d[c] * df; break;
+            case BlendEquation::Subtract: v = s[c] * sf - d[c] * df; break;
+            case BlendEquation::ReverseSubtract: v = d[c] * df - s[c] * sf; break;
+            case BlendEquation::Min: v = s[c] < d[c] ? s[c] : d[c]; break;
+            case BlendEquation::Max: v = s[c] > d[c] ? s[c] : d[c]; break;
+        }
+        out[int(c)] = clamp01(v);
+    }
+    Rgba8 q = quantize_rgba8(out, ColorSpace::Srgb);
+    if (!(b.color_mask & 1u)) q.r = dst.r;
+    if (!(b.color_mask & 2u)) q.g = dst.g;
+    if (!(b.color_mask & 4u)) q.b = dst.b;
+    if (!(b.color_mask & 8u)) q.a = dst.a;
+    return q;
+}
+
 // The blended color of a fragment over dst, with the draw's color mask applied.
 inline Rgba8 blend(const BlendSettings& b, const glm::vec4& src, Rgba8 dst) {
+    if (b.color_space == ColorSpace::Srgb) return blend_linear(b, src, dst);
     const Rgba8 q = quantize_rgba8(src);
     const auto out = blend_channels<int>(b, {q.r, q.g, q.b, q.a}, {dst.r, dst.g, dst.b, dst.a},
                                          {b.constant.r, b.constant.g, b.constant.b, b.constant.a});
@@ -159,8 +202,14 @@ inline void merge_fragment(const BlendSettings& b, Rgba8* color, unsigned mask, 
             if (mask & (1u << s)) color[s] = blend(b, src, color[s]);
         return;
     }
+    if (!Blended) {
+        const Rgba8 q = quantize_rgba8(src, b.color_space);
+        for (int s = 0; s < Samples; ++s)
+            if (mask & (1u << s)) color[s] = q;
+        return;
+    }
     for (int s = 0; s < Samples; ++s)
-        if (mask & (1u << s)) color[s] = Blended ? blend(b.mode, src, color[s]) : quantize_rgba8(src);
+        if (mask & (1u << s)) color[s] = blend(b.mode, src, color[s]);
 }
 
 // ---- eight pixels of a row at once (see tile_back_end.h)
@@ -170,6 +219,13 @@ inline void merge_fragment(const BlendSettings& b, Rgba8* color, unsigned mask, 
 inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c) {
     using simd::quantize_unorm8;
     return quantize_unorm8(c[0]) | (quantize_unorm8(c[1]) << 8) | (quantize_unorm8(c[2]) << 16) | (quantize_unorm8(c[3]) << 24);
+}
+// The same as a framebuffer of that color space stores them (sRGB: r, g, b encoded).
+inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace space) {
+    if (space == ColorSpace::Linear) return quantize_pack_rgba8(c);
+    simd::i8 r, g, b;
+    srgb::encode(c[0], r), srgb::encode(c[1], g), srgb::encode(c[2], b);
+    return r | (g << 8) | (b << 16) | (simd::quantize_unorm8(c[3]) << 24);
 }
 
 // Blends colors c (r, g, b, a lanes) into the group of eight RGBA8 pixels from row[x] on
@@ -181,7 +237,7 @@ inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int wi
     const BlendMode mode = settings.mode;
     const i8 old = simd::load_group<i8>(row, x, width);
     if (!Blended || mode == BlendMode::Opaque) {
-        simd::store_group(row, x, width, simd::select(write, quantize_pack_rgba8(c), old));
+        simd::store_group(row, x, width, simd::select(write, quantize_pack_rgba8(c, settings.color_space), old));
         return;
     }
     const i8 sr = simd::quantize_unorm8(c[0]), sg = simd::quantize_unorm8(c[1]), sb = simd::quantize_unorm8(c[2]),

@@ -6,13 +6,15 @@
 namespace softraster {
 
 // Writes the picture of `fb` into `out` (resized to fit): each channel of a pixel is
-// floor(mean + 0.5) of its samples' 8-bit values; a copy when single-sampled.
+// floor(mean + 0.5) of its samples' 8-bit values; a copy when single-sampled. In an sRGB
+// framebuffer r, g, b are averaged in linear light: the decoded samples' mean, encoded.
 // Framebuffer::read_pixels() is this into a new Image; reusing `out` saves allocating it.
 void resolve(const Framebuffer& fb, Image& out);
 
 // Supersampling's resolve: each pixel of the result is the box-filtered k x k block of `in`
-// (whose size is k times the result's), each channel floor(mean + 0.5) of the block's values.
-Image downsample_box(const Image& in, int k);
+// (whose size is k times the result's), each channel floor(mean + 0.5) of the block's values
+// (sRGB: r, g, b averaged in linear light, as resolve does).
+Image downsample_box(const Image& in, int k, ColorSpace color = ColorSpace::Linear);
 
 // Pictures of the other buffers, one value per pixel (its first sample): the stored depth,
 // and the stencil values (`clear` everywhere when the framebuffer has no stencil buffer).

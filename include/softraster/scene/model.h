@@ -28,8 +28,11 @@ struct Model {
 enum class MissingTexture { Fail, Warn };
 
 // Reads a model file through assimp. Throws InputError("<path>: <what>") for a file it cannot
-// use (unreadable, malformed, no triangles, non-finite positions...).
-Model load_model(const std::filesystem::path& path, MissingTexture missing = MissingTexture::Fail);
+// use (unreadable, malformed, no triangles, non-finite positions...). `color`: the color
+// space of the scene that draws it, which its base color and emissive textures take (their
+// files are sRGB-encoded; a linear scene uses the stored values as they are).
+Model load_model(const std::filesystem::path& path, MissingTexture missing = MissingTexture::Fail,
+                 ColorSpace color = ColorSpace::Linear);
 
 // Whether the file's extension is one load_model reads (case-insensitive).
 bool is_model_file(const std::filesystem::path& path);
@@ -46,11 +49,13 @@ std::optional<BoundingSphere> bounding_sphere(const std::vector<SceneObject>& ob
 enum class ModelView { ThreeQuarter, Front, Back, Left, Right, Top, Bottom, Iso };
 struct ModelPicture {
     int width = 512, height = 512;
-    glm::vec4 background{0.2f, 0.2f, 0.25f, 1.0f};
+    glm::vec4 background{0.2f, 0.2f, 0.25f, 1.0f};  // as it appears in the picture (stored values / 255)
     int samples = 4;
     ModelView view = ModelView::ThreeQuarter;
     std::optional<Shading> shading;  // none: each material's own (lit, or unlit where the file says)
     int camera = -1;                 // >= 0: the file's camera with this index instead of framing
+    ColorSpace color_space = ColorSpace::Srgb;  // glTF's: color textures and the picture sRGB-encoded
+    ToneMapping tone_mapping;
 };
 
 // A scene that shows the model: a perspective camera (30 degrees) whose view the model's

@@ -15,6 +15,7 @@
 #include "softraster/render_state.h"
 #include "softraster/scene/mesh.h"
 #include "softraster/shading/texture.h"
+#include "softraster/shading/tone_mapping.h"
 
 namespace softraster {
 
@@ -116,6 +117,10 @@ struct Scene {
     int supersample = 1;    // rendered at supersample x the size, then box-filtered
     uint8_t clear_stencil = 0;
     bool sorted = true;     // v1 draw order (opaque, then blended back to front); false: file order
+    // Version 2 (docs/scene-format.md "Color spaces"): sRGB decodes the color textures and
+    // encodes the picture, so that light is lit and blended linearly; and the tone mapping.
+    ColorSpace color_space = ColorSpace::Linear;
+    ToneMapping tone_mapping;
     Camera camera;
     Lights lights;
     std::vector<SceneObject> objects;

@@ -136,6 +136,7 @@ struct SurfaceShader {
                     if (u->has_specular) rgb += spec;
                 out = glm::vec4(rgb, base.a);
             }
+            if (u->tone_mapping.active()) out = tone_map(u->tone_mapping, out);  // the light becomes a color
         }
         return true;
     }
@@ -281,6 +282,7 @@ struct SurfaceShader {
                     }
                 }
             }
+            if (u->tone_mapping.active()) tone_map(u->tone_mapping, out);
         }
     }
 };

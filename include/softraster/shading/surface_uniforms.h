@@ -8,6 +8,7 @@
 
 #include "softraster/shading/lighting.h"
 #include "softraster/shading/texture.h"
+#include "softraster/shading/tone_mapping.h"
 
 namespace softraster {
 
@@ -33,6 +34,7 @@ struct SurfaceUniforms {
     const Texture* emissive_texture = nullptr;
     const Texture* normal_texture = nullptr;  // with it the draw's mesh carries tangents (normal_mapping.h)
     float normal_scale = 1.0f;
+    ToneMapping tone_mapping;  // exposure and tone curve, the shader's last step (not for normals and depth)
 };
 
 }  // namespace softraster

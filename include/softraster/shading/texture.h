@@ -1,5 +1,7 @@
 // Textures and their sampling (docs/scene-format.md "Textures"): 8-bit texels, (0, 0) at the
 // bottom-left of the picture as displayed, texel centers at ((i + 0.5) / w, (j + 0.5) / h).
+// An sRGB texture (GL_SRGB8_ALPHA8) stores its r, g, b encoded; each texel is decoded
+// (srgb.h) before it is filtered, and its mipmaps are averaged in linear light.
 //
 // A texture keeps its mipmap chain (level k is max(1, w >> k) by max(1, h >> k), each texel
 // the average of the 2x2 texels under it, as glGenerateMipmap makes them). A Sampler is
@@ -20,6 +22,7 @@
 
 #include "softraster/image.h"
 #include "softraster/pipeline/simd.h"
+#include "softraster/srgb.h"
 
 namespace softraster {
 
@@ -55,17 +58,26 @@ struct LevelChoice {
 
 class Texture {
 public:
-    explicit Texture(const Image& image);  // image row 0 is the top of the picture
+    // image row 0 is the top of the picture
+    explicit Texture(const Image& image, ColorSpace color = ColorSpace::Linear);
 
+    bool srgb() const { return srgb_; }
     int width() const { return levels_[0].width; }
     int height() const { return levels_[0].height; }
     int levels() const { return int(levels_.size()); }
     int level_width(int level) const { return levels_[size_t(level)].width; }
     int level_height(int level) const { return levels_[size_t(level)].height; }
     // Texel (i, j) of a level, j counted from the bottom row, as floats in [0, 1].
+    // (Decoded, for an sRGB texture.)
     glm::vec4 texel(int level, int i, int j) const {
         const uint32_t t = texels()[texel_index(levels_[size_t(level)], i, j)];
+        if (srgb_) return {srgb::decode(uint8_t(t)), srgb::decode(uint8_t(t >> 8)), srgb::decode(uint8_t(t >> 16)), float(t >> 24) * (1.0f / 255.0f)};
         return glm::vec4(float(t & 255u), float((t >> 8) & 255u), float((t >> 16) & 255u), float(t >> 24)) * (1.0f / 255.0f);
+    }
+    // The stored bytes of a texel (encoded, for an sRGB texture).
+    Rgba8 stored(int level, int i, int j) const {
+        const uint32_t t = texels()[texel_index(levels_[size_t(level)], i, j)];
+        return {uint8_t(t), uint8_t(t >> 8), uint8_t(t >> 16), uint8_t(t >> 24)};
     }
     glm::vec4 texel(int i, int j) const { return texel(0, i, j); }
 
@@ -98,6 +110,7 @@ private:
     std::vector<Level> levels_;
     std::vector<uint32_t> storage_;  // RGBA8 texels, r in the low byte
     size_t aligned_ = 0;              // index of the first texel: at a 64-byte boundary
+    bool srgb_ = false;
     // The first 16 levels' numbers as lane tables (sample8 picks a level per lane with a
     // permute); entries past the last level repeat it.
     struct LevelTables {
@@ -105,7 +118,7 @@ private:
     } tables_{};
     template <Filter F>
     glm::vec4 sample_level(int level, glm::vec2 uv, const Sampler& s) const;
-    template <bool Wide>
+    template <bool Wide, bool Srgb>
     void sample_lanes(const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d, const Sampler& s,
                       std::array<simd::f8, 4>& rgba) const;
 };

@@ -1,0 +1,90 @@
+// sRGB's transfer function (srgb.h) against the formulas evaluated independently in double
+// precision: every 8-bit value decodes to the formula's value, every float encodes to the
+// rounded formula, the eight-lane form agrees, and the tables' shortcut holds everywhere.
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "softraster/framebuffer.h"
+#include "softraster/srgb.h"
+
+using namespace softraster;
+
+namespace {
+
+double decode_ref(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+double encode_ref(double l) { return l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055; }
+int stored_ref(float l) {
+    const double c = std::clamp(double(l), 0.0, 1.0);
+    return int(std::floor(255.0 * encode_ref(c) + 0.5));
+}
+
+TEST(Srgb, DecodesEveryByteToTheFormula) {
+    for (int k = 0; k < 256; ++k) EXPECT_EQ(srgb::decode(uint8_t(k)), float(decode_ref(k / 255.0))) << k;
+    EXPECT_EQ(srgb::decode(0), 0.0f);
+    EXPECT_EQ(srgb::decode(255), 1.0f);
+}
+
+TEST(Srgb, EncodingADecodedByteGivesItBack) {
+    for (int k = 0; k < 256; ++k) EXPECT_EQ(int(srgb::encode(srgb::decode(uint8_t(k)))), k) << k;
+}
+
+// Around each threshold (where the rounding changes) and at random: the formula's rounding.
+// (Away from a threshold by more than the double formula's error, the two must agree.)
+TEST(Srgb, EncodesFloatsAsTheRoundedFormula) {
+    const srgb::Tables& t = srgb::tables();
+    for (int k = 1; k < 256; ++k) {
+        const float at = t.threshold[size_t(k)], below = std::nextafter(at, 0.0f);
+        EXPECT_EQ(int(srgb::encode(at)), k) << k;
+        EXPECT_EQ(int(srgb::encode(below)), k - 1) << k;
+        EXPECT_GE(255.0 * encode_ref(at) + 0.5, k - 1e-9) << k;
+        EXPECT_LT(255.0 * encode_ref(below) + 0.5, k + 1e-9) << k;
+    }
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-0.1f, 1.1f);
+    std::uniform_real_distribution<float> e(-30.0f, 1.0f);
+    for (int i = 0; i < 200000; ++i) {
+        const float l = i % 2 ? u(rng) : std::exp2(e(rng));
+        EXPECT_EQ(int(srgb::encode(l)), stored_ref(l)) << l;
+    }
+    EXPECT_EQ(srgb::encode(std::numeric_limits<float>::quiet_NaN()), 0);
+    EXPECT_EQ(srgb::encode(std::numeric_limits<float>::infinity()), 255);
+    EXPECT_EQ(srgb::encode(-std::numeric_limits<float>::infinity()), 0);
+}
+
+// The shortcut: each of the intervals the first lookup uses holds at most one threshold, so
+// one comparison after it is enough.
+TEST(Srgb, NoIntervalHoldsTwoThresholds) {
+    const srgb::Tables& t = srgb::tables();
+    for (int b = 0; b < srgb::Tables::kBuckets; ++b) {
+        const uint32_t first = uint32_t(srgb::Tables::kFirstBucket + b) << 16;
+        const float lo = std::bit_cast<float>(first), hi = std::bit_cast<float>(first + 0xffffu);
+        int inside = 0;
+        for (int k = 1; k < 256; ++k) inside += t.threshold[size_t(k)] > lo && t.threshold[size_t(k)] <= hi;
+        EXPECT_LE(inside, 1) << b;
+    }
+    // Below the first interval every value stores 0.
+    EXPECT_GT(double(t.threshold[1]), std::ldexp(1.0, -13));
+}
+
+TEST(Srgb, EightLanesAgreeWithOne) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-0.2f, 1.2f);
+    for (int i = 0; i < 20000; ++i) {
+        simd::f8 l;
+        for (int k = 0; k < simd::kLanes; ++k) l[k] = u(rng);
+        if (i == 0) l[0] = std::numeric_limits<float>::quiet_NaN(), l[1] = 1.0f, l[2] = 0.0f, l[3] = 1e30f;
+        simd::i8 got;
+        srgb::encode(l, got);
+        for (int k = 0; k < simd::kLanes; ++k) ASSERT_EQ(got[k], int(srgb::encode(l[k]))) << l[k];
+    }
+}
+
+TEST(Srgb, AColorKeepsItsAlphaLinear) {
+    const Rgba8 c = quantize_rgba8({0.5f, 0.0f, 1.0f, 0.5f}, ColorSpace::Srgb);
+    EXPECT_EQ(c, (Rgba8{188, 0, 255, 128}));
+}
+
+}  // namespace
