@@ -9,6 +9,8 @@
 #include <span>
 #include <vector>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -85,7 +87,9 @@ inline bool random_triangle(std::mt19937& rng, float cx, float cy, float sx, flo
 
 // Writes `contents` to <temp>/<folder>/<name> and returns the path.
 inline std::filesystem::path write_temp_file(const std::string& folder, const std::string& name, const std::string& contents) {
-    const auto dir = std::filesystem::temp_directory_path() / folder;
+    // One folder per process: ctest runs the tests of a program in parallel processes, and
+    // two of them writing the same name would read each other's file.
+    const auto dir = std::filesystem::temp_directory_path() / (folder + "_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const auto path = dir / name;
     std::ofstream(path, std::ios::binary) << contents;

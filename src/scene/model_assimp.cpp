@@ -482,7 +482,7 @@ private:
             return;
         }
         if (l.mType == aiLightSource_DIRECTIONAL) {
-            if (model_.lights.directional.size() < Lights::kMaxDirectional) model_.lights.directional.push_back({direction, color});
+            if (model_.lights.directional.size() < Lights::kMaxDirectional) model_.lights.directional.push_back({direction, color, {}});
             else ignored_.insert("directional lights past the eighth");
             return;
         }

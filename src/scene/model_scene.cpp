@@ -84,8 +84,8 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
     }
     scene.lights.ambient = glm::vec3(0.25f);
     scene.lights.directional = {
-        {glm::normalize(f + 0.6f * r - 0.8f * u), glm::vec3(0.75f)},  // key: from the upper left
-        {glm::normalize(0.5f * f - r), glm::vec3(0.3f)},              // fill: from the right
+        {glm::normalize(f + 0.6f * r - 0.8f * u), glm::vec3(0.75f), {}},  // key: from the upper left
+        {glm::normalize(0.5f * f - r), glm::vec3(0.3f), {}},            // fill: from the right
     };
     return scene;
 }

@@ -163,12 +163,63 @@ void draw_object(Context& ctx, const SceneRenderer::Draw& d) {
 
 }  // namespace
 
+// A light's shadow map: the depth of the nearest caster per texel, seen through S
+// (shadow_matrix), filled by a depth pass of the scene's opaque triangles before each frame.
+struct SceneRenderer::ShadowPass {
+    Framebuffer fb;
+    ShadowMap map;
+    std::vector<Draw> casters;
+    std::unique_ptr<Context> ctx;  // the recorded pass
+
+    ShadowPass(const Scene& scene, const ShadowSettings& s, const glm::mat4& matrix, const glm::vec3& travel)
+        : fb(s.size, s.size) {
+        map.depth = fb.depth_data();
+        map.size = s.size;
+        map.matrix = matrix;
+        map.offset = glm::vec3(-double(s.bias) * glm::normalize(glm::dvec3(travel)));
+        map.pcf = s.pcf;
+        // Both faces cast; only depth is written, pushed back by the slope of the caster.
+        RenderState st;
+        st.cull = CullMode::None;
+        st.color_write = false;
+        st.polygon_offset_factor = s.slope_bias;
+        for (const SceneObject& o : scene.objects) {
+            if (o.primitive != Topology::Triangles || o.material.blend != BlendMode::Opaque) continue;
+            Draw d{o.mesh.get(), nullptr, Topology::Triangles, nullptr, {}, st, Shading::Unlit, false};
+            d.uniforms.mvp = glm::mat4(glm::dmat4(matrix) * glm::dmat4(o.model));
+            casters.push_back(std::move(d));
+        }
+    }
+    void render(WorkerPool* pool) {
+        if (!ctx) {
+            ctx = std::make_unique<Context>(fb, pool);
+            ctx->clear(glm::vec4(0.0f), 1.0f, 0);
+            for (const Draw& d : casters) draw_object(*ctx, d);
+        }
+        ctx->execute();
+    }
+};
+
 SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     : scene_(scene), pool_(threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr) {
     const glm::mat4 view = view_matrix(scene.camera);
     const glm::mat4 proj = projection_matrix(scene.camera, scene.width, scene.height);
     for (const PunctualLight& l : scene.lights.punctual) positional_lights_.push_back(shader_numbers(l));
-    const LightSet lights = light_set(scene.lights, positional_lights_);
+    LightSet lights = light_set(scene.lights, positional_lights_);
+    // Shadows: directional lights first, then spot lights, each with its pass.
+    static_assert(Lights::kMaxShadowed == size_t(kMaxShadowedLights));
+    const Bounds bounds = shadow_bounds(scene);
+    auto add_shadow = [&](const ShadowSettings& s, const glm::mat4& matrix, const glm::vec3& travel) {
+        shadow_passes_.push_back(std::make_unique<ShadowPass>(scene, s, matrix, travel));
+        lights.shadows[size_t(lights.shadow_count)] = &shadow_passes_.back()->map;
+        return lights.shadow_count++;
+    };
+    for (size_t i = 0; i < scene.lights.directional.size() && i < size_t(LightSet::kMax); ++i)
+        if (const DirectionalLight& l = scene.lights.directional[i]; l.shadow)
+            lights.shadow_of[i] = add_shadow(*l.shadow, shadow_matrix(l, bounds), l.direction);
+    for (size_t i = 0; i < scene.lights.punctual.size(); ++i)
+        if (const PunctualLight& l = scene.lights.punctual[i]; l.shadow && l.spot)
+            positional_lights_[i].shadow = add_shadow(*l.shadow, shadow_matrix(l, bounds), l.direction);
 
     struct Keyed {
         Draw draw;
@@ -209,10 +260,10 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
             d.mesh = d.flat_mesh.get();
             u.normal_matrix = glm::mat3(1.0f);
         }
-        // Point and spot lights need the surface position P, which the lambert and flat
-        // shaders do not interpolate: blinn_phong's does, and without its specular term it
-        // computes exactly their formula.
-        if (lights.positional_count && (d.shading == Shading::Lambert || d.shading == Shading::Flat)) {
+        // Point and spot lights and shadows need the surface position P, which the lambert
+        // and flat shaders do not interpolate: blinn_phong's does, and without its specular
+        // term it computes exactly their formula.
+        if ((lights.positional_count || lights.shadow_count) && (d.shading == Shading::Lambert || d.shading == Shading::Flat)) {
             d.shading = Shading::BlinnPhong;
             u.has_specular = false;
         }
@@ -255,6 +306,7 @@ size_t SceneRenderer::triangle_count() const {
 }
 
 RenderStats SceneRenderer::render(Framebuffer& fb) const {
+    for (const auto& pass : shadow_passes_) pass->render(pool_.get());
     if (!ctx_) {
         ctx_ = std::make_unique<Context>(fb, pool_.get());
         ctx_->clear(scene_.background, 1.0f, scene_.clear_stencil);

@@ -51,7 +51,7 @@ Scene showcase_scene() {
     s.camera.near = 0.1f;
     s.camera.far = 100.0f;
     s.lights.ambient = {0.14f, 0.14f, 0.17f};
-    s.lights.directional = {{{-0.5f, -0.9f, -0.6f}, {0.9f, 0.86f, 0.8f}}, {{0.7f, -0.3f, 0.4f}, {0.25f, 0.3f, 0.42f}}};
+    s.lights.directional = {{{-0.5f, -0.9f, -0.6f}, {0.9f, 0.86f, 0.8f}, {}}, {{0.7f, -0.3f, 0.4f}, {0.25f, 0.3f, 0.42f}, {}}};
 
     const auto sphere = std::make_shared<Mesh>(make_uv_sphere(0.6, 32, 64));
     const auto coarse_sphere = std::make_shared<Mesh>(make_uv_sphere(0.6, 10, 16));

@@ -1,5 +1,8 @@
 // Model, view and projection matrices of the scene format (spec "The pipeline, exactly"),
 // computed in double precision and stored as float.
+#include <algorithm>
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "softraster/scene/scene.h"
@@ -28,6 +31,48 @@ glm::mat4 projection_matrix(const Camera& c, int width, int height) {
     }
     // gluPerspective
     return glm::mat4(glm::perspectiveRH_NO(glm::radians(double(c.fov_y)), aspect, double(c.near), double(c.far)));
+}
+
+Bounds shadow_bounds(const Scene& scene) {
+    Bounds b;
+    for (const SceneObject& o : scene.objects) {
+        if (o.primitive != Topology::Triangles) continue;
+        for (const MeshVertex& v : o.mesh->vertices) {
+            const glm::vec3 p = glm::vec3(o.model * glm::vec4(v.position, 1.0f));
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+            b.lo = b.empty() ? p : glm::min(b.lo, p);
+            b.hi = b.empty() ? p : glm::max(b.hi, p);
+        }
+    }
+    return b;
+}
+
+namespace {
+// The light's up vector for lookAt: +y, or +z when the light is within about 8 degrees of vertical.
+glm::dvec3 shadow_up(const glm::dvec3& d) { return std::abs(d.y) > 0.99 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0); }
+}  // namespace
+
+// Orthographic, around the bounds' sphere (center c, radius r): the eye 2r behind c.
+glm::mat4 shadow_matrix(const DirectionalLight& light, const Bounds& b) {
+    const glm::dvec3 d = glm::normalize(glm::dvec3(light.direction));
+    const glm::dvec3 c = b.empty() ? glm::dvec3(0.0) : 0.5 * (glm::dvec3(b.lo) + glm::dvec3(b.hi));
+    const double r = std::max(1e-3, b.empty() ? 0.0 : 0.5 * glm::length(glm::dvec3(b.hi) - glm::dvec3(b.lo)));
+    const glm::dmat4 view = glm::lookAtRH(c - 2.0 * r * d, c, shadow_up(d));
+    return glm::mat4(glm::orthoRH_NO(-r, r, -r, r, r, 3.0 * r) * view);
+}
+
+// Perspective along the cone's axis, 2 x outer_angle wide; far reaches the bounds' farthest
+// corner (times 1.01), near is far / 100.
+glm::mat4 shadow_matrix(const PunctualLight& light, const Bounds& b) {
+    const glm::dvec3 p(light.position), d = glm::normalize(glm::dvec3(light.direction));
+    double far = 1e-3;
+    for (int k = 0; k < 8 && !b.empty(); ++k) {
+        const glm::dvec3 corner((k & 1 ? b.hi : b.lo).x, (k & 2 ? b.hi : b.lo).y, (k & 4 ? b.hi : b.lo).z);
+        far = std::max(far, glm::length(corner - p));
+    }
+    far *= 1.01;
+    const glm::dmat4 view = glm::lookAtRH(p, p + d, shadow_up(d));
+    return glm::mat4(glm::perspectiveRH_NO(glm::radians(2.0 * double(light.outer_angle)), 1.0, far / 100.0, far) * view);
 }
 
 }  // namespace softraster

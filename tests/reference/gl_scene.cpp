@@ -157,13 +157,14 @@ void upload(GlScene::Draw& d, const softraster::Mesh& mesh, const std::vector<ui
 }
 }  // namespace
 
-GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
+GlScene::GlScene(const softraster::Scene& scene) : scene_(scene), shadows_(std::make_unique<GlShadows>(scene)) {
 
     const glm::mat4 view = softraster::view_matrix(scene.camera);
     const glm::mat4 proj = softraster::projection_matrix(scene.camera, scene.width, scene.height);
     std::map<const softraster::Texture*, GLuint> textures;
     const std::string tone_defines = "#define TONE_MAPPING " + std::to_string(int(scene.tone_mapping.active())) +
-                                     "\n#define TONE_CURVE " + std::to_string(int(scene.tone_mapping.curve)) + "\n";
+                                     "\n#define TONE_CURVE " + std::to_string(int(scene.tone_mapping.curve)) + "\n" +
+                                     shadows_->defines();
     auto program = [&](int shading, bool textured, int lights, bool cutoff, bool affine, const std::string& maps = "") {
         const std::string key = maps + std::to_string(shading) + " " + std::to_string(int(textured)) + std::to_string(int(cutoff)) +
                                 std::to_string(int(affine));
@@ -274,6 +275,8 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene) {
         if (a->blended != b->blended) return !a->blended;
         return a->blended && a->view_depth < b->view_depth;
     });
+    for (const auto& d : draws_)
+        if (d->mode == GL_TRIANGLES && !d->blended && !d->wire) casters_.push_back({d->vao, d->index_count, d->model});
     if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL error while uploading the scene");
 }
 
@@ -283,6 +286,7 @@ GlScene::~GlScene() {
 }
 
 void GlScene::draw_frame() const {
+    shadows_->draw(casters_);
     const glm::vec4 bg = scene_.background;
     glClearColor(bg.r, bg.g, bg.b, bg.a);
     glClearDepth(1.0);
@@ -298,6 +302,7 @@ void GlScene::draw_frame() const {
     const softraster::Lights& lights = scene_.lights;
     for (const auto& d : draws_) {
         glUseProgram(d->program);
+        shadows_->bind(d->program);
         auto loc = [&](const char* n) { return glGetUniformLocation(d->program, n); };
         glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(lights.ambient));
         for (size_t i = 0; i < lights.directional.size(); ++i) {

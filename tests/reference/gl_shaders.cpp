@@ -120,6 +120,61 @@ vec3 pbr_light(vec3 c_diff, vec3 f0, float a2, vec3 n, vec3 v, vec3 l, float nv)
     return ((1.0 - F) * c_diff / PI + F * (D * vis)) * (PI * nl);
 }
 #endif
+// Shadows (SHADOWS maps, gl_shadows.h): a shadowed light's color times its visibility at P,
+// the share of the PCF kernel's texels at or beyond P's depth seen from the light.
+uniform int u_shadow_of[8];  // directional light i's map, or SHADOWS for none
+#if POSITIONAL > 0
+uniform int u_pl_shadow[POSITIONAL];
+#endif
+#if SHADOWS > 0
+uniform mat4 u_shadow_matrix[SHADOWS];
+uniform vec3 u_shadow_offset[SHADOWS];  // bias toward the light
+uniform int u_shadow_size[SHADOWS];
+uniform int u_shadow_pcf[SHADOWS];
+uniform sampler2D u_shadow_map0;
+#if SHADOWS > 1
+uniform sampler2D u_shadow_map1;
+#endif
+#if SHADOWS > 2
+uniform sampler2D u_shadow_map2;
+#endif
+#if SHADOWS > 3
+uniform sampler2D u_shadow_map3;
+#endif
+float shadow_visibility(sampler2D map, int s, vec3 p) {
+    vec3 b = p + u_shadow_offset[s];
+    mat4 m = u_shadow_matrix[s];
+    vec4 q = ((m[0] * b.x + m[1] * b.y) + m[2] * b.z) + m[3];
+    if (!(q.w > 0.0)) return 1.0;
+    float iw = 1.0 / q.w, half_size = 0.5 * float(u_shadow_size[s]);
+    float x = (q.x * iw + 1.0) * half_size, y = (1.0 - q.y * iw) * half_size, z = (q.z * iw + 1.0) * 0.5;
+    int last = u_shadow_size[s] - 1, r = u_shadow_pcf[s];
+    // window row 0 is the top, as in the depth pass (the vertex shader's y flip)
+    int i = clamp(int(floor(clamp(x, -1.0, float(u_shadow_size[s])))), 0, last);
+    int j = clamp(int(floor(clamp(y, -1.0, float(u_shadow_size[s])))), 0, last);
+    int lit = 0;
+    for (int dj = -r; dj <= r; ++dj)
+        for (int di = -r; di <= r; ++di)
+            if (z <= texelFetch(map, ivec2(clamp(i + di, 0, last), clamp(j + dj, 0, last)), 0).r) ++lit;
+    return float(lit) * (1.0 / float((2 * r + 1) * (2 * r + 1)));
+}
+#endif
+float vis[SHADOWS + 1];
+void shadow_visibilities() {
+    vis[SHADOWS] = 1.0;
+#if SHADOWS > 0
+    vis[0] = shadow_visibility(u_shadow_map0, 0, v_world);
+#endif
+#if SHADOWS > 1
+    vis[1] = shadow_visibility(u_shadow_map1, 1, v_world);
+#endif
+#if SHADOWS > 2
+    vis[2] = shadow_visibility(u_shadow_map2, 2, v_world);
+#endif
+#if SHADOWS > 3
+    vis[3] = shadow_visibility(u_shadow_map3, 3, v_world);
+#endif
+}
 // SHADING 4: N . H (Blinn-Phong); 7: R . V (Phong)
 float specular_factor(vec3 n, vec3 l, vec3 v) {
 #if SHADING == 7
@@ -166,12 +221,13 @@ void main() {
     n = normalize(m.x * v_tangent.xyz + m.y * b + m.z * v_normal);
 #endif
     float nv = max(0.0, dot(n, v));
+    shadow_visibilities();
     vec3 rgb = u_ambient * c_diff * occlusion;
-    for (int i = 0; i < LIGHTS; ++i) rgb += u_light_color[i] * pbr_light(c_diff, f0, a2, n, v, u_to_light[i], nv);
+    for (int i = 0; i < LIGHTS; ++i) rgb += (u_light_color[i] * vis[u_shadow_of[i]]) * pbr_light(c_diff, f0, a2, n, v, u_to_light[i], nv);
 #if POSITIONAL > 0
     for (int i = 0; i < POSITIONAL; ++i) {
         vec3 l;
-        vec3 c = positional_light(i, v_world, l);
+        vec3 c = positional_light(i, v_world, l) * vis[u_pl_shadow[i]];
         rgb += c * pbr_light(c_diff, f0, a2, n, v, l, nv);
     }
 #endif
@@ -183,17 +239,19 @@ void main() {
     vec3 intensity = u_ambient;
     vec3 spec = vec3(0.0);
     vec3 v = normalize(u_eye - v_world);
+    shadow_visibilities();
     for (int i = 0; i < LIGHTS; ++i) {
         float nl = dot(n, u_to_light[i]);
-        intensity += u_light_color[i] * max(0.0, nl);
+        vec3 c = u_light_color[i] * vis[u_shadow_of[i]];
+        intensity += c * max(0.0, nl);
 #if SHADING == 4 || SHADING == 7
-        if (nl > 0.0) spec += u_light_color[i] * u_specular * specular_factor(n, u_to_light[i], v);
+        if (nl > 0.0) spec += c * u_specular * specular_factor(n, u_to_light[i], v);
 #endif
     }
 #if POSITIONAL > 0
     for (int i = 0; i < POSITIONAL; ++i) {
         vec3 l;
-        vec3 c = positional_light(i, v_world, l);
+        vec3 c = positional_light(i, v_world, l) * vis[u_pl_shadow[i]];
         float nl = dot(n, l);
         intensity += c * max(0.0, nl);
 #if SHADING == 4 || SHADING == 7
@@ -218,6 +276,19 @@ void main() {
     if (frag.a < u_alpha_cutoff) discard;
 #endif
 }
+)";
+
+// The depth pass: positions only, the same y flip as the scene's vertex shader.
+const char* const kDepthVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 a_pos;
+uniform mat4 u_mvp;
+void main() {
+    vec4 clip = u_mvp * vec4(a_pos, 1.0);
+    gl_Position = vec4(clip.x, -clip.y, clip.z, clip.w);
+}
+)";
+const char* const kDepthFragmentShader = R"(#version 330 core
+void main() {}
 )";
 
 }  // namespace glref

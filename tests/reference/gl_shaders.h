@@ -7,5 +7,7 @@ namespace glref {
 extern const char* const kLightPrelude;    // both stages: point and spot lights
 extern const char* const kVertexShader;
 extern const char* const kFragmentShader;
+extern const char* const kDepthVertexShader;    // the shadow maps' depth pass (gl_shadows.cpp), complete
+extern const char* const kDepthFragmentShader;
 
 }  // namespace glref

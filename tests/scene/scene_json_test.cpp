@@ -208,3 +208,47 @@ TEST(SceneJson, ColorSpaceAndToneMapping) {
         EXPECT_NE(err.find(expected), std::string::npos) << "got: " << err << "\nwanted: " << expected;
     }
 }
+
+// Version 2's shadows: on directional and spot lights, their defaults and limits.
+TEST(SceneJson, Shadows) {
+    const std::string lights_at = "\"objects\"";
+    auto with_lights = [&](const std::string& lights) {
+        std::string s = kMinimal;
+        s.replace(s.find("\"version\": 1"), 12, "\"version\": 2");
+        return s.replace(s.find(lights_at), lights_at.size(), "\"lights\": " + lights + ", " + lights_at);
+    };
+    const Scene s = load_scene(write_scene("shadow.json", with_lights(R"({"directional": [{"direction": [0, -1, 0], "color": [1, 1, 1],
+      "shadow": {}}, {"direction": [1, -1, 0], "color": [1, 1, 1]}], "spot": [{"position": [0, 3, 0], "direction": [0, -1, 0],
+      "shadow": {"size": 64, "bias": 0.5, "slope_bias": 0, "pcf": 0}}]})")));
+    ASSERT_TRUE(s.lights.directional[0].shadow.has_value());
+    EXPECT_EQ(s.lights.directional[0].shadow->size, 1024);
+    EXPECT_EQ(s.lights.directional[0].shadow->pcf, 1);
+    EXPECT_FALSE(s.lights.directional[1].shadow.has_value());
+    ASSERT_TRUE(s.lights.punctual[0].shadow.has_value());
+    EXPECT_EQ(s.lights.punctual[0].shadow->size, 64);
+    EXPECT_EQ(s.lights.punctual[0].shadow->bias, 0.5f);
+    EXPECT_EQ(s.lights.punctual[0].shadow->slope_bias, 0.0f);
+
+    const std::string dir = R"({"direction": [0, -1, 0], "color": [1, 1, 1], "shadow": {}})";
+    const std::pair<std::string, const char*> errors[] = {
+        {with("\"objects\"", "\"lights\": {\"directional\": [" + dir + "]}, \"objects\""),
+         "lights.directional[0].shadow: a version 2 key in a version 1 file"},
+        {with_lights(R"({"point": [{"position": [0, 1, 0], "shadow": {}}]})"), "lights.point[0].shadow: unknown key"},
+        {with_lights(R"({"spot": [{"position": [0, 1, 0], "direction": [0, -1, 0], "outer_angle": 85, "shadow": {}}]})"),
+         "lights.spot[0].outer_angle: a spot light with a shadow has outer_angle at most 80"},
+        {with_lights(R"({"directional": [{"direction": [0, -1, 0], "color": [1, 1, 1], "shadow": {"size": 8}}]})"),
+         "lights.directional[0].shadow.size: value 8 out of range"},
+        {with_lights(R"({"directional": [{"direction": [0, -1, 0], "color": [1, 1, 1], "shadow": {"pcf": 5}}]})"),
+         "lights.directional[0].shadow.pcf: value 5 out of range"},
+        {with_lights(R"({"directional": [{"direction": [0, -1, 0], "color": [1, 1, 1], "shadow": {"bias": -1}}]})"),
+         "lights.directional[0].shadow.bias: value -1 out of range"},
+        {with_lights(R"({"directional": [{"direction": [0, -1, 0], "color": [1, 1, 1], "shadow": {"softness": 1}}]})"),
+         "lights.directional[0].shadow.softness: unknown key"},
+        {with_lights("{\"directional\": [" + dir + "," + dir + "," + dir + "," + dir + "," + dir + "]}"),
+         "lights.directional[4].shadow: at most 4 lights with a shadow"},
+    };
+    for (const auto& [json, expected] : errors) {
+        const std::string err = error_of(json);
+        EXPECT_NE(err.find(expected), std::string::npos) << "got: " << err << "\nwanted: " << expected;
+    }
+}

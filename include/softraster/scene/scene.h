@@ -64,9 +64,18 @@ struct Wireframe {
     float width = 1.0f;
 };
 
+// A light's shadow map (version 2, docs/scene-format.md "Shadows").
+struct ShadowSettings {
+    int size = 1024;          // texels per side
+    float bias = 0.02f;       // scene units a receiving point moves toward the light
+    float slope_bias = 2.0f;  // the depth pass's polygon offset factor
+    int pcf = 1;              // kernel radius r: (2r+1)^2 texels
+};
+
 struct DirectionalLight {
     glm::vec3 direction{0, -1, 0};  // the way the light travels
     glm::vec3 color{1.0f};
+    std::optional<ShadowSettings> shadow;
 };
 
 // A point or spot light (version 2; glTF's KHR_lights_punctual).
@@ -79,11 +88,13 @@ struct PunctualLight {
     float range = 0.0f;             // 0: no range (the falloff never ends)
     float inner_angle = 0.0f;       // spot: degrees from the axis, inner < outer <= 90
     float outer_angle = 45.0f;
+    std::optional<ShadowSettings> shadow;  // spot lights only
 };
 
 struct Lights {
     static constexpr size_t kMaxDirectional = 8;
     static constexpr size_t kMaxPunctual = 256;
+    static constexpr size_t kMaxShadowed = 4;  // lights with a shadow map (shadow_mapping.h)
     glm::vec3 ambient{0.0f};
     std::vector<DirectionalLight> directional;
     std::vector<PunctualLight> punctual;  // point and spot lights
@@ -131,6 +142,16 @@ glm::mat4 model_matrix(const glm::vec3& translate, const glm::vec3& rotate_deg, 
 // gluLookAt and gluPerspective / glOrtho for the scene's camera and image aspect.
 glm::mat4 view_matrix(const Camera& c);
 glm::mat4 projection_matrix(const Camera& c, int width, int height);
+
+// Shadow maps (docs/scene-format.md "Shadows"): the world-space box of every triangle
+// object's finite vertices, and a light's view-projection S that frames it.
+struct Bounds {
+    glm::vec3 lo{1.0f}, hi{-1.0f};  // empty while lo.x > hi.x
+    bool empty() const { return lo.x > hi.x; }
+};
+Bounds shadow_bounds(const Scene& scene);
+glm::mat4 shadow_matrix(const DirectionalLight& light, const Bounds& b);
+glm::mat4 shadow_matrix(const PunctualLight& spot, const Bounds& b);
 
 // Reads and validates a scene file; meshes and textures are resolved relative to it.
 // Throws InputError with one line naming the file and the JSON path or line.

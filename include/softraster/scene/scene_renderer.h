@@ -31,7 +31,7 @@ public:
     SceneRenderer(const SceneRenderer&) = delete;
     SceneRenderer& operator=(const SceneRenderer&) = delete;
 
-    // Clears fb and draws every object in the spec's draw order. The draws are recorded on
+    // Draws the shadow maps, then clears fb and draws every object in the spec's draw order. The draws are recorded on
     // the first call and replayed after, so buffers are reused from frame to frame; fb must
     // have the scene's sample count. Not for use by two threads at once.
     RenderStats render(Framebuffer& fb) const;
@@ -60,8 +60,10 @@ public:
     const std::vector<Draw>& draws() const { return draws_; }
 
 private:
+    struct ShadowPass;  // a light's shadow map and the depth pass that fills it (scene_renderer.cpp)
     const Scene& scene_;
     std::vector<PositionalLight> positional_lights_;  // the draws' LightSets point here
+    std::vector<std::unique_ptr<ShadowPass>> shadow_passes_;  // and here; drawn first in each frame
     std::vector<Draw> draws_;  // in draw order
     std::unique_ptr<WorkerPool> pool_;
     mutable std::unique_ptr<Context> ctx_;  // the recorded frame

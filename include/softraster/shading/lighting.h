@@ -8,6 +8,8 @@
 // at p_i (KHR_lights_punctual): L_i = normalize(p_i - P) and c_i its color times its
 // intensity times the falloff with distance d (inverse square, ended smoothly at the range)
 // times, for a spot, the falloff between its inner and outer cone (positional_light below).
+// A light with a shadow map has c_i times its visibility at P (shadow_mapping.h), computed
+// once per fragment for all the terms (light_visibility below).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -17,6 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include "softraster/pipeline/simd.h"
+#include "softraster/shading/shadow_mapping.h"
 
 namespace softraster {
 
@@ -40,6 +43,7 @@ struct PositionalLight {
     bool spot = false;
     glm::vec3 spot_direction{0.0f, 0.0f, -1.0f};  // where the light travels, unit length
     float cone_scale = 0.0f, cone_offset = 0.0f;  // 1 / (cos inner - cos outer), -cos outer * scale
+    int shadow = kMaxShadowedLights;              // its entry in LightVisibility (the last: none)
 };
 
 struct LightSet {
@@ -53,7 +57,25 @@ struct LightSet {
     // and flat surfaces lit by them with the blinn_phong shader without its specular term.
     const PositionalLight* positional = nullptr;
     int positional_count = 0;
+    // The shadow maps, owned by the scene renderer, and which directional light has which.
+    std::array<const ShadowMap*, kMaxShadowedLights> shadows{};
+    int shadow_count = 0;
+    std::array<int, kMax> shadow_of = filled(kMaxShadowedLights);
+
+private:
+    static constexpr std::array<int, kMax> filled(int v) {
+        std::array<int, kMax> a{};
+        a.fill(v);
+        return a;
+    }
 };
+
+// Each shadowed light's visibility at P; 1 for the rest.
+template <class T, class P>
+inline void light_visibility(const LightSet& lights, const P& p, LightVisibility<T>& vis) {
+    for (int s = 0; s < lights.shadow_count; ++s) shadow_visibility(*lights.shadows[size_t(s)], p, vis[size_t(s)]);
+}
+inline constexpr LightVisibility<float> kFullyLit = {1.0f, 1.0f, 1.0f, 1.0f, 1.0f};
 
 // The direction to a positional light from P and the light's c_i there:
 //   d^2 = max(|p - P|^2, 1e-8), L = (p - P) / sqrt(d^2),
@@ -78,10 +100,15 @@ enum class Specular { BlinnPhong, Phong };
 template <Specular Sp>
 inline float specular_factor(const glm::vec3& n, const glm::vec3& l, const glm::vec3& to_eye, float nl, float shininess);
 
-inline glm::vec3 diffuse_intensity(const LightSet& lights, const glm::vec3& n) {
+// c_i times the light's visibility (times 1 is exact: unshadowed lights keep their bits).
+inline glm::vec3 light_color(const LightSet& lights, int i, const LightVisibility<float>& vis) {
+    return lights.color[size_t(i)] * vis[size_t(lights.shadow_of[size_t(i)])];
+}
+
+inline glm::vec3 diffuse_intensity(const LightSet& lights, const glm::vec3& n, const LightVisibility<float>& vis = kFullyLit) {
     glm::vec3 intensity = lights.ambient;
     for (int i = 0; i < lights.count; ++i)
-        intensity += lights.color[size_t(i)] * std::max(0.0f, glm::dot(n, lights.to_light[size_t(i)]));
+        intensity += light_color(lights, i, vis) * std::max(0.0f, glm::dot(n, lights.to_light[size_t(i)]));
     return intensity;
 }
 
@@ -100,13 +127,13 @@ inline float specular_factor<Specular::Phong>(const glm::vec3& n, const glm::vec
 
 template <Specular Sp = Specular::BlinnPhong>
 inline glm::vec3 specular_term(const LightSet& lights, const glm::vec3& n, const glm::vec3& to_eye,
-                               const glm::vec3& specular, float shininess) {
+                               const glm::vec3& specular, float shininess, const LightVisibility<float>& vis) {
     glm::vec3 sum(0.0f);
     for (int i = 0; i < lights.count; ++i) {
         const glm::vec3 l = lights.to_light[size_t(i)];
         const float nl = glm::dot(n, l);
         if (!(nl > 0.0f)) continue;
-        sum += lights.color[size_t(i)] * specular * specular_factor<Sp>(n, l, to_eye, nl, shininess);
+        sum += light_color(lights, i, vis) * specular * specular_factor<Sp>(n, l, to_eye, nl, shininess);
     }
     return sum;
 }
@@ -114,10 +141,12 @@ inline glm::vec3 specular_term(const LightSet& lights, const glm::vec3& n, const
 // The point and spot lights' part of I and S at P (added after the directional lights').
 template <bool WithSpecular, Specular Sp = Specular::BlinnPhong>
 inline void positional_terms(const LightSet& lights, const glm::vec3& n, const glm::vec3& p, const glm::vec3& to_eye,
-                             const glm::vec3& specular, float shininess, glm::vec3& diffuse, glm::vec3& spec) {
+                             const glm::vec3& specular, float shininess, glm::vec3& diffuse, glm::vec3& spec,
+                             const LightVisibility<float>& vis = kFullyLit) {
     for (int i = 0; i < lights.positional_count; ++i) {
         glm::vec3 l;
-        const glm::vec3 c = positional_light(lights.positional[i], p, l);
+        const PositionalLight& light = lights.positional[i];
+        const glm::vec3 c = positional_light(light, p, l) * vis[size_t(light.shadow)];
         const float nl = glm::dot(n, l);
         diffuse += c * std::max(0.0f, nl);
         if constexpr (WithSpecular)
@@ -139,11 +168,19 @@ inline simd::f8 specular_power(simd::f8 a, float b) {
     return r;
 }
 
-inline simd::vec3x8 diffuse_intensity(const LightSet& lights, const simd::vec3x8& n) {
+inline void light_color(const LightSet& lights, int i, const LightVisibility<simd::f8>& vis, simd::vec3x8& out) {
+    const glm::vec3 c = lights.color[size_t(i)];
+    const simd::f8& v = vis[size_t(lights.shadow_of[size_t(i)])];
+    out = {c.x * v, c.y * v, c.z * v};
+}
+
+inline simd::vec3x8 diffuse_intensity(const LightSet& lights, const simd::vec3x8& n, const LightVisibility<simd::f8>& vis) {
     using simd::splat;
     simd::vec3x8 sum{splat(lights.ambient.x), splat(lights.ambient.y), splat(lights.ambient.z)};
     for (int i = 0; i < lights.count; ++i) {
-        const glm::vec3 l = lights.to_light[size_t(i)], c = lights.color[size_t(i)];
+        const glm::vec3 l = lights.to_light[size_t(i)];
+        simd::vec3x8 c;
+        light_color(lights, i, vis, c);
         const simd::f8 nl = simd::max(splat(0.0f), n.x * l.x + n.y * l.y + n.z * l.z);
         sum.x += c.x * nl;
         sum.y += c.y * nl;
@@ -167,12 +204,14 @@ inline simd::f8 specular_factor(const simd::vec3x8& n, const simd::vec3x8& l, co
 
 template <Specular Sp = Specular::BlinnPhong>
 inline simd::vec3x8 specular_term(const LightSet& lights, const simd::vec3x8& n, const simd::vec3x8& to_eye,
-                                  const glm::vec3& specular, float shininess) {
+                                  const glm::vec3& specular, float shininess, const LightVisibility<simd::f8>& vis) {
     using simd::splat;
     simd::vec3x8 sum{splat(0.0f), splat(0.0f), splat(0.0f)};
     for (int i = 0; i < lights.count; ++i) {
         const glm::vec3 l = lights.to_light[size_t(i)];
-        const glm::vec3 k = lights.color[size_t(i)] * specular;
+        simd::vec3x8 c;
+        light_color(lights, i, vis, c);
+        const simd::vec3x8 k{c.x * specular.x, c.y * specular.y, c.z * specular.z};
         const simd::f8 nl = n.x * l.x + n.y * l.y + n.z * l.z;
         const simd::i8 lit = nl > 0.0f;
         if (!simd::any(lit)) continue;
@@ -205,11 +244,15 @@ inline simd::vec3x8 positional_light(const PositionalLight& light, const simd::v
 
 template <bool WithSpecular, Specular Sp = Specular::BlinnPhong>
 inline void positional_terms(const LightSet& lights, const simd::vec3x8& n, const simd::vec3x8& p, const simd::vec3x8& to_eye,
-                             const glm::vec3& specular, float shininess, simd::vec3x8& diffuse, simd::vec3x8& spec) {
+                             const glm::vec3& specular, float shininess, simd::vec3x8& diffuse, simd::vec3x8& spec,
+                             const LightVisibility<simd::f8>& vis) {
     using simd::splat;
     for (int i = 0; i < lights.positional_count; ++i) {
         simd::vec3x8 l;
-        const simd::vec3x8 c = positional_light(lights.positional[i], p, l);
+        const PositionalLight& light = lights.positional[i];
+        const simd::vec3x8 c0 = positional_light(light, p, l);
+        const simd::f8 v = vis[size_t(light.shadow)];
+        const simd::vec3x8 c{c0.x * v, c0.y * v, c0.z * v};
         const simd::f8 nl = simd::dot(n, l);
         const simd::f8 nl0 = simd::max(splat(0.0f), nl);
         diffuse.x += c.x * nl0;

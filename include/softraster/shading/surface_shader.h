@@ -118,16 +118,18 @@ struct SurfaceShader {
             } else if constexpr (Model == Shading::Gouraud) {
                 out = glm::vec4(glm::vec3(base) * in.intensity, base.a);
             } else {  // Lambert, Flat (N is the face normal), BlinnPhong, Phong
+                LightVisibility<float> vis = kFullyLit;  // shadows need P: the scene renderer draws them with blinn_phong
+                if constexpr (Varyings::kWorld) light_visibility(u->lights, in.world, vis);
                 const glm::vec3 n = glm::normalize(in.normal);
-                glm::vec3 diffuse = diffuse_intensity(u->lights, n), spec(0.0f);
+                glm::vec3 diffuse = diffuse_intensity(u->lights, n, vis), spec(0.0f);
                 if constexpr (Varyings::kSpecular) {
                     if (u->has_specular || u->lights.positional_count) {
                         const glm::vec3 v = glm::normalize(u->eye - in.world);
                         if (u->has_specular) {
-                            spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess);
-                            positional_terms<true, kSpecularModel>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec);
+                            spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess, vis);
+                            positional_terms<true, kSpecularModel>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec, vis);
                         } else {
-                            positional_terms<false>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec);
+                            positional_terms<false>(u->lights, n, in.world, v, u->specular, u->shininess, diffuse, spec, vis);
                         }
                     }
                 }
@@ -165,11 +167,14 @@ struct SurfaceShader {
         }
         const glm::vec3 v = glm::normalize(u->eye - in.world);
         const float nv = std::max(0.0f, glm::dot(n, v));
+        LightVisibility<float> vis = kFullyLit;
+        light_visibility(u->lights, in.world, vis);
         glm::vec3 rgb = u->lights.ambient * s.diffuse * occlusion;
-        for (int i = 0; i < u->lights.count; ++i) rgb += u->lights.color[size_t(i)] * pbr_light(s, n, v, u->lights.to_light[size_t(i)], nv);
+        for (int i = 0; i < u->lights.count; ++i) rgb += light_color(u->lights, i, vis) * pbr_light(s, n, v, u->lights.to_light[size_t(i)], nv);
         for (int i = 0; i < u->lights.positional_count; ++i) {
             glm::vec3 l;
-            const glm::vec3 c = positional_light(u->lights.positional[i], in.world, l);
+            const PositionalLight& light = u->lights.positional[i];
+            const glm::vec3 c = positional_light(light, in.world, l) * vis[size_t(light.shadow)];
             rgb += c * pbr_light(s, n, v, l, nv);
         }
         return rgb + emissive;
@@ -209,6 +214,9 @@ struct SurfaceShader {
         const vec3x8 p{in[Varyings::kWorldAt], in[Varyings::kWorldAt + 1], in[Varyings::kWorldAt + 2]};
         const vec3x8 v = normalize({u->eye.x - p.x, u->eye.y - p.y, u->eye.z - p.z});
         const f8 nv = max(splat(0.0f), dot(n, v));
+        LightVisibility<f8> vis;
+        vis.fill(splat(1.0f));
+        light_visibility(u->lights, p, vis);
         const glm::vec3 a = u->lights.ambient;
         vec3x8 rgb{a.x * s.diffuse.x * occlusion, a.y * s.diffuse.y * occlusion, a.z * s.diffuse.z * occlusion};
         auto add = [&](const vec3x8& c, const vec3x8& l) {
@@ -216,13 +224,17 @@ struct SurfaceShader {
             rgb.x += c.x * f.x, rgb.y += c.y * f.y, rgb.z += c.z * f.z;
         };
         for (int i = 0; i < u->lights.count; ++i) {
-            const glm::vec3 c = u->lights.color[size_t(i)], l = u->lights.to_light[size_t(i)];
-            add({splat(c.x), splat(c.y), splat(c.z)}, {splat(l.x), splat(l.y), splat(l.z)});
+            const glm::vec3 l = u->lights.to_light[size_t(i)];
+            vec3x8 c;
+            light_color(u->lights, i, vis, c);
+            add(c, {splat(l.x), splat(l.y), splat(l.z)});
         }
         for (int i = 0; i < u->lights.positional_count; ++i) {
             vec3x8 l;
-            const vec3x8 c = positional_light(u->lights.positional[i], p, l);
-            add(c, l);
+            const PositionalLight& light = u->lights.positional[i];
+            const vec3x8 c = positional_light(light, p, l);
+            const f8& k = vis[size_t(light.shadow)];
+            add({c.x * k, c.y * k, c.z * k}, l);
         }
         return {rgb.x + emissive.x, rgb.y + emissive.y, rgb.z + emissive.z};
     }
@@ -259,17 +271,20 @@ struct SurfaceShader {
                 const vec3x8 i = vec3_at(Varyings::kIntensityAt);
                 out = {base[0] * i.x, base[1] * i.y, base[2] * i.z, base[3]};
             } else {  // Lambert, Flat, BlinnPhong, Phong
+                LightVisibility<f8> vis;
+                vis.fill(splat(1.0f));
+                if constexpr (Varyings::kWorld) light_visibility(u->lights, vec3_at(Varyings::kWorldAt), vis);
                 const vec3x8 n = normalize(vec3_at(Varyings::kNormalAt));
-                vec3x8 d = diffuse_intensity(u->lights, n), spec{splat(0.0f), splat(0.0f), splat(0.0f)};
+                vec3x8 d = diffuse_intensity(u->lights, n, vis), spec{splat(0.0f), splat(0.0f), splat(0.0f)};
                 if constexpr (Varyings::kSpecular) {
                     if (u->has_specular || u->lights.positional_count) {
                         const vec3x8 p = vec3_at(Varyings::kWorldAt);
                         const vec3x8 v = normalize({u->eye.x - p.x, u->eye.y - p.y, u->eye.z - p.z});
                         if (u->has_specular) {
-                            spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess);
-                            positional_terms<true, kSpecularModel>(u->lights, n, p, v, u->specular, u->shininess, d, spec);
+                            spec = specular_term<kSpecularModel>(u->lights, n, v, u->specular, u->shininess, vis);
+                            positional_terms<true, kSpecularModel>(u->lights, n, p, v, u->specular, u->shininess, d, spec, vis);
                         } else {
-                            positional_terms<false>(u->lights, n, p, v, u->specular, u->shininess, d, spec);
+                            positional_terms<false>(u->lights, n, p, v, u->specular, u->shininess, d, spec, vis);
                         }
                     }
                 }

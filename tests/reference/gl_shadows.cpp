@@ -1,0 +1,125 @@
+#include "gl_shadows.h"
+#include "gl_shaders.h"
+
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace glref {
+namespace {
+
+GLuint depth_program() {
+    const GLuint program = glCreateProgram();
+    for (const auto& [type, src] : {std::pair{GLenum(GL_VERTEX_SHADER), kDepthVertexShader}, std::pair{GLenum(GL_FRAGMENT_SHADER), kDepthFragmentShader}}) {
+        const GLuint s = glCreateShader(type);
+        glShaderSource(s, 1, &src, nullptr);
+        glCompileShader(s);
+        glAttachShader(program, s);
+    }
+    glLinkProgram(program);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) throw std::runtime_error("GLSL link error (depth pass)");
+    return program;
+}
+
+}  // namespace
+
+GlShadows::GlShadows(const softraster::Scene& scene) {
+    const softraster::Bounds bounds = softraster::shadow_bounds(scene);
+    auto add = [&](const softraster::ShadowSettings& s, const glm::mat4& matrix, const glm::vec3& travel) {
+        Map m;
+        m.settings = s;
+        m.matrix = matrix;
+        m.offset = glm::vec3(-double(s.bias) * glm::normalize(glm::dvec3(travel)));
+        glGenTextures(1, &m.texture);
+        glBindTexture(GL_TEXTURE_2D, m.texture);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, s.size, s.size, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+        glGenFramebuffers(1, &m.fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, m.fbo);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m.texture, 0);
+        glDrawBuffer(GL_NONE);
+        glReadBuffer(GL_NONE);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) throw std::runtime_error("shadow map framebuffer incomplete");
+        maps_.push_back(m);
+        return int(maps_.size()) - 1;
+    };
+    GLint previous = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    for (const softraster::DirectionalLight& l : scene.lights.directional)
+        directional_.push_back(l.shadow ? add(*l.shadow, softraster::shadow_matrix(l, bounds), l.direction) : -1);
+    for (const softraster::PunctualLight& l : scene.lights.punctual)
+        spot_.push_back(l.shadow && l.spot ? add(*l.shadow, softraster::shadow_matrix(l, bounds), l.direction) : -1);
+    for (std::vector<int>* list : {&directional_, &spot_})
+        for (int& k : *list)
+            if (k < 0) k = count();
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    if (!maps_.empty()) program_ = depth_program();
+}
+
+GlShadows::~GlShadows() {
+    for (const Map& m : maps_) {
+        glDeleteFramebuffers(1, &m.fbo);
+        glDeleteTextures(1, &m.texture);
+    }
+    if (program_) glDeleteProgram(program_);
+}
+
+std::string GlShadows::defines() const { return "#define SHADOWS " + std::to_string(count()) + "\n"; }
+
+void GlShadows::draw(const std::vector<Caster>& casters) const {
+    if (maps_.empty()) return;
+    GLint previous = 0, viewport[4];
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glUseProgram(program_);
+    glDisable(GL_CULL_FACE);  // both faces cast
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    for (const Map& m : maps_) {
+        glBindFramebuffer(GL_FRAMEBUFFER, m.fbo);
+        glViewport(0, 0, m.settings.size, m.settings.size);
+        glClearDepth(1.0);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glPolygonOffset(m.settings.slope_bias, 0.0f);
+        for (const Caster& c : casters) {
+            const glm::mat4 mvp = glm::mat4(glm::dmat4(m.matrix) * glm::dmat4(c.model));
+            glUniformMatrix4fv(glGetUniformLocation(program_, "u_mvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+            glBindVertexArray(c.vao);
+            glDrawElements(GL_TRIANGLES, c.index_count, GL_UNSIGNED_INT, nullptr);
+        }
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+}
+
+void GlShadows::bind(GLuint program) const {
+    auto loc = [&](const std::string& n) { return glGetUniformLocation(program, n.c_str()); };
+    for (size_t i = 0; i < directional_.size(); ++i) glUniform1i(loc("u_shadow_of[" + std::to_string(i) + "]"), directional_[i]);
+    for (size_t i = 0; i < spot_.size(); ++i) glUniform1i(loc("u_pl_shadow[" + std::to_string(i) + "]"), spot_[i]);
+    for (size_t s = 0; s < maps_.size(); ++s) {
+        const Map& m = maps_[s];
+        const std::string at = "[" + std::to_string(s) + "]";
+        glUniformMatrix4fv(loc("u_shadow_matrix" + at), 1, GL_FALSE, glm::value_ptr(m.matrix));
+        glUniform3fv(loc("u_shadow_offset" + at), 1, glm::value_ptr(m.offset));
+        glUniform1i(loc("u_shadow_size" + at), m.settings.size);
+        glUniform1i(loc("u_shadow_pcf" + at), m.settings.pcf);
+        glUniform1i(loc("u_shadow_map" + std::to_string(s)), kFirstUnit + int(s));
+        glActiveTexture(GLenum(GL_TEXTURE0 + kFirstUnit + int(s)));
+        glBindTexture(GL_TEXTURE_2D, m.texture);
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace glref
