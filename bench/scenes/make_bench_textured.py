@@ -9,6 +9,7 @@
   bench_pbr                       the textured model with glTF metallic-roughness materials (the
                                   texture also as the metallic-roughness map, a normal map of
                                   bevelled tiles), a directional, a point and a spot light
+                                  with a shadow map, in sRGB with the ACES curve
 The texture (textures/tiles_1024.png) and the corridor's walls (corridor_*.obj) are written
 here too. Run it again after editing; the files it writes are committed."""
 import json, math, os, struct, zlib
@@ -109,11 +110,14 @@ write('bench_textured_model_trilinear', dict(base, version=2, objects=[dict(o, m
 
 pbr = {"shading": "pbr", "color": [1, 1, 1, 1], "texture": "textures/tiles_1024.png", "metallic": 0.8, "roughness": 0.9,
        "metallic_roughness_texture": "textures/tiles_1024.png", "normal_texture": "textures/tiles_normal_1024.png", "filter": "trilinear"}
+# The spot light casts shadows (the default map: 1024², 3 x 3 PCF); sRGB color and the ACES curve.
 write('bench_pbr', dict(base, version=2, objects=[dict(o, material=pbr) for o in model],
+                        image=dict(base["image"], color_space="srgb", tone_mapping="aces"),
                         lights={"ambient": [0.1, 0.1, 0.12], "directional": LIGHTS["directional"][:1],
                                 "point": [{"position": [1.8, 1.2, 2.0], "color": [0.5, 0.7, 1.0], "intensity": 4, "range": 8}],
                                 "spot": [{"position": [-1.5, 2.5, 2.5], "direction": [0.5, -0.8, -0.9], "color": [1, 0.9, 0.7],
-                                          "intensity": 10, "inner_angle": 15, "outer_angle": 30}]}))
+                                          "intensity": 10, "inner_angle": 15, "outer_angle": 30,
+                                          "shadow": {}}]}))
 
 # The corridor: floor, ceiling and two walls, 2 wide, 2 high and 60 long, from z = 2 to -58.
 L, W = 60.0, 1.0
