@@ -85,6 +85,8 @@ void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size) {
     cmd.add_option("--exposure", opt.exposure, "Light multiplied by this before the tone curve")
         ->check(CLI::Range(1e-6, 1e6))
         ->capture_default_str();
+    cmd.add_flag("--shadows", opt.shadows,
+                 "Shadow maps for the key light, or the file's directional and spot lights (at most 4)");
     cmd.add_flag("-v,--verbose", opt.verbose, "Also say what the file has that is not drawn");
 }
 
@@ -100,11 +102,12 @@ ModelPicture ModelOptions::picture(int default_size) const {
     p.view = kViews.at(view);
     if (!shading.empty()) p.shading = kShadings.at(shading);
     p.camera = camera;
+    p.shadows = shadows;
     return p;
 }
 
 bool ModelOptions::any_given(const CLI::App& cmd) const {
-    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure"})
+    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure", "--shadows"})
         if (cmd.count(name) > 0) return true;
     return false;
 }

@@ -14,6 +14,7 @@ struct ModelOptions {
     std::string size, view = "three-quarter", background, shading, color_space = "srgb", tone_mapping = "none";
     int samples = 4, camera = -1;
     float exposure = 1.0f;
+    bool shadows = false;
     bool verbose = false;
 
     // The picture these options describe; `default_size` when --size is not given.

@@ -77,9 +77,18 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
     const glm::vec3 f = glm::normalize(cam.target - cam.eye);
     const glm::vec3 r = glm::normalize(glm::cross(f, cam.up));
     const glm::vec3 u = glm::cross(r, f);
+    // The default map, its bias a 200th of the model's radius (the format's 0.02 units suits
+    // a model a few units across only).
+    ShadowSettings shadow;
+    shadow.bias = 0.005f * radius;
     if (!model.lights.directional.empty() || !model.lights.punctual.empty()) {
         scene.lights = model.lights;
         scene.lights.ambient = glm::vec3(0.1f);
+        size_t shadowed = 0;
+        for (DirectionalLight& l : scene.lights.directional)
+            if (picture.shadows && shadowed < Lights::kMaxShadowed) l.shadow = shadow, ++shadowed;
+        for (PunctualLight& l : scene.lights.punctual)
+            if (picture.shadows && l.spot && l.outer_angle <= 80.0f && shadowed < Lights::kMaxShadowed) l.shadow = shadow, ++shadowed;
         return scene;
     }
     scene.lights.ambient = glm::vec3(0.25f);
@@ -87,6 +96,7 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
         {glm::normalize(f + 0.6f * r - 0.8f * u), glm::vec3(0.75f), {}},  // key: from the upper left
         {glm::normalize(0.5f * f - r), glm::vec3(0.3f), {}},            // fill: from the right
     };
+    if (picture.shadows) scene.lights.directional[0].shadow = shadow;
     return scene;
 }
 

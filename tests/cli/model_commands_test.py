@@ -95,6 +95,18 @@ r = run(['render', BOX, '-o', os.path.join(work, 'box_aces.png'), '--size', '64'
 check('render --tone-mapping aces', r.returncode == 0 and png_pixels(os.path.join(work, 'box_aces.png'))[2][32] !=
       png_pixels(os.path.join(work, 'box_srgb.png'))[2][32], r.stderr)
 
+# --shadows: the key light's shadow map darkens the floor beside the cube, and brightens nothing.
+CUBE_ON_FLOOR = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scenes', 'models', 'normal_mapped.gltf')
+rows_of = {}
+for flag in ([], ['--shadows']):
+    target = os.path.join(work, 'floor%s.png' % ''.join(flag))
+    r = run(['render', CUBE_ON_FLOOR, '-o', target, '--size', '96'] + flag)
+    check('render %s' % flag, r.returncode == 0, r.stderr)
+    rows_of[bool(flag)] = png_pixels(target)[2]
+darker = sum(a < b for ra, rb in zip(rows_of[True], rows_of[False]) for a, b in zip(ra, rb))
+brighter = sum(a > b for ra, rb in zip(rows_of[True], rows_of[False]) for a, b in zip(ra, rb))
+check('--shadows darkens', darker > 100 and brighter == 0, (darker, brighter))
+
 scene = os.path.join(work, 'scene.json')
 json.dump({'version': 1, 'image': {'width': 8, 'height': 8}, 'camera': {'eye': [0, 0, 3], 'target': [0, 0, 0]},
            'objects': []}, open(scene, 'w'))

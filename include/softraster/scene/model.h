@@ -56,12 +56,15 @@ struct ModelPicture {
     int camera = -1;                 // >= 0: the file's camera with this index instead of framing
     ColorSpace color_space = ColorSpace::Srgb;  // glTF's: color textures and the picture sRGB-encoded
     ToneMapping tone_mapping;
+    bool shadows = false;  // shadow maps for the key light or the file's lights (model_scene)
 };
 
 // A scene that shows the model: a perspective camera (30 degrees) whose view the model's
 // bounding sphere fills, from the chosen side (+y is up), and the file's lights with a dim
 // ambient light, or where the file has none a default rig (a key light from the upper left
-// of the camera, a fill light from the right, ambient). Throws
+// of the camera, a fill light from the right, ambient). With `shadows` the key light, or
+// the file's first directional and spot lights (at most 4; spots at most 80 degrees wide),
+// get the format's default shadow map with the bias scaled to the model's size. Throws
 // InputError when `picture.camera` names no camera of the file.
 Scene model_scene(const Model& model, const ModelPicture& picture);
 
