@@ -87,6 +87,10 @@ void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size) {
         ->capture_default_str();
     cmd.add_flag("--shadows", opt.shadows,
                  "Shadow maps for the key light, or the file's directional and spot lights (at most 4)");
+    cmd.add_option("--env", opt.env, "An equirectangular .hdr or .exr picture that lights pbr materials (image-based lighting)");
+    cmd.add_option("--env-intensity", opt.env_intensity, "The environment's light multiplied by this")
+        ->check(CLI::Range(0.0, 1e6))
+        ->capture_default_str();
     cmd.add_flag("-v,--verbose", opt.verbose, "Also say what the file has that is not drawn");
 }
 
@@ -103,11 +107,12 @@ ModelPicture ModelOptions::picture(int default_size) const {
     if (!shading.empty()) p.shading = kShadings.at(shading);
     p.camera = camera;
     p.shadows = shadows;
+    if (!env.empty()) p.environment = std::make_shared<const EnvironmentLighting>(prepare_environment(read_environment(env), env_intensity));
     return p;
 }
 
 bool ModelOptions::any_given(const CLI::App& cmd) const {
-    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure", "--shadows"})
+    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure", "--shadows", "--env", "--env-intensity"})
         if (cmd.count(name) > 0) return true;
     return false;
 }

@@ -15,6 +15,8 @@ struct ModelOptions {
     int samples = 4, camera = -1;
     float exposure = 1.0f;
     bool shadows = false;
+    std::string env;
+    float env_intensity = 1.0f;
     bool verbose = false;
 
     // The picture these options describe; `default_size` when --size is not given.

@@ -45,6 +45,7 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
     scene.samples = picture.samples;
     scene.color_space = picture.color_space;
     scene.tone_mapping = picture.tone_mapping;
+    scene.environment = picture.environment;
     scene.objects = model.objects;
     if (picture.shading)
         for (SceneObject& o : scene.objects) o.material.shading = *picture.shading;

@@ -362,6 +362,20 @@ struct Loader {
         return slot;
     }
 
+    // Image-based lighting (docs/scene-format.md "Environment lighting").
+    std::shared_ptr<const EnvironmentLighting> read_environment(const Node& n) {
+        n.expect_object({"file", "intensity"});
+        const std::string rel = n["file"].string();
+        if (rel.empty()) n["file"].fail("empty file path");
+        const float intensity = n.has("intensity") ? float(n["intensity"].number_in(0, 1e6, false, false, "0 to 1e6")) : 1.0f;
+        try {
+            return std::make_shared<const EnvironmentLighting>(
+                prepare_environment(softraster::read_environment((dir / rel).lexically_normal()), intensity));
+        } catch (const InputError& e) {
+            n["file"].fail(e.what());
+        }
+    }
+
     // A value only version 2 knows, in a version 1 file: the same error as a v2 key.
     void need_v2(const Node& n, bool v2_value) const {
         if (v2_value && version < 2) n.fail("\"" + n.string() + "\" needs version 2 (set \"version\": 2)");
@@ -597,7 +611,8 @@ Scene load_scene(const std::filesystem::path& path) {
     const Node top(root, "", file);
     if (!root.is_object()) top.fail("expected an object");
     loader.version = top["version"].integer_in(1, 2);
-    top.expect_object({"version", "image", "camera", "lights", "objects"}, {"draw_order"}, loader.version);
+    top.expect_object({"version", "image", "camera", "lights", "objects"}, {"draw_order", "environment"}, loader.version);
+    if (top.has("environment")) scene.environment = loader.read_environment(top["environment"]);
     if (top.has("draw_order")) scene.sorted = top["draw_order"].choice<bool>({{"sorted", true}, {"file", false}});
     loader.read_image(top["image"], scene);
     loader.read_camera(top["camera"], scene.camera);

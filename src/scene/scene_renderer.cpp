@@ -255,6 +255,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         u.normal_texture = o.material.normal_texture.get();
         u.normal_scale = o.material.normal_scale;
         u.tone_mapping = scene.tone_mapping;
+        u.environment = scene.environment.get();
         if (d.shading == Shading::Flat) {
             d.flat_mesh = world_face_normal_mesh(*o.mesh, o.model);
             d.mesh = d.flat_mesh.get();

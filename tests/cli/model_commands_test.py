@@ -107,6 +107,20 @@ darker = sum(a < b for ra, rb in zip(rows_of[True], rows_of[False]) for a, b in 
 brighter = sum(a > b for ra, rb in zip(rows_of[True], rows_of[False]) for a, b in zip(ra, rb))
 check('--shadows darkens', darker > 100 and brighter == 0, (darker, brighter))
 
+# --env: a uniform environment lights a pbr model's materials; a cut file is one line, exit 2.
+hdr = b'#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n' + b'\x80\x80\x80\x81' * 8
+open(os.path.join(work, 'white.hdr'), 'wb').write(hdr)
+open(os.path.join(work, 'cut.hdr'), 'wb').write(hdr[:-4])
+target = os.path.join(work, 'box_env.png')
+r = run(['render', BOX, '-o', target, '--size', '64', '--shading', 'pbr', '--env', os.path.join(work, 'white.hdr')])
+check('render --env', r.returncode == 0, r.stderr)
+r2 = run(['render', BOX, '-o', os.path.join(work, 'box_pbr.png'), '--size', '64', '--shading', 'pbr'])
+check('--env lights the model', r.returncode == 0 and r2.returncode == 0 and
+      sum(png_pixels(target)[2][32]) > sum(png_pixels(os.path.join(work, 'box_pbr.png'))[2][32]) + 100)
+r = run(['render', BOX, '-o', os.path.join(work, 'no.png'), '--env', os.path.join(work, 'cut.hdr')])
+check('--env cut file', r.returncode == 2 and 'cut.hdr: corrupt Radiance HDR' in r.stderr and len(r.stderr.strip().splitlines()) == 1
+      and not os.path.exists(os.path.join(work, 'no.png')), r.stderr)
+
 scene = os.path.join(work, 'scene.json')
 json.dump({'version': 1, 'image': {'width': 8, 'height': 8}, 'camera': {'eye': [0, 0, 3], 'target': [0, 0, 0]},
            'objects': []}, open(scene, 'w'))

@@ -157,14 +157,15 @@ void upload(GlScene::Draw& d, const softraster::Mesh& mesh, const std::vector<ui
 }
 }  // namespace
 
-GlScene::GlScene(const softraster::Scene& scene) : scene_(scene), shadows_(std::make_unique<GlShadows>(scene)) {
+GlScene::GlScene(const softraster::Scene& scene)
+    : scene_(scene), shadows_(std::make_unique<GlShadows>(scene)), environment_(std::make_unique<GlEnvironment>(scene.environment.get())) {
 
     const glm::mat4 view = softraster::view_matrix(scene.camera);
     const glm::mat4 proj = softraster::projection_matrix(scene.camera, scene.width, scene.height);
     std::map<const softraster::Texture*, GLuint> textures;
     const std::string tone_defines = "#define TONE_MAPPING " + std::to_string(int(scene.tone_mapping.active())) +
                                      "\n#define TONE_CURVE " + std::to_string(int(scene.tone_mapping.curve)) + "\n" +
-                                     shadows_->defines();
+                                     shadows_->defines() + environment_->defines();
     auto program = [&](int shading, bool textured, int lights, bool cutoff, bool affine, const std::string& maps = "") {
         const std::string key = maps + std::to_string(shading) + " " + std::to_string(int(textured)) + std::to_string(int(cutoff)) +
                                 std::to_string(int(affine));
@@ -225,7 +226,7 @@ GlScene::GlScene(const softraster::Scene& scene) : scene_(scene), shadows_(std::
                                         (maps[1] ? "1" : "0") + "\n#define EMISSIVE_MAP " + (maps[2] ? "1" : "0") +
                                         "\n#define NORMAL_MAP " + (maps[3] ? "1" : "0") + "\n";
         for (int k = 0; k < 4; ++k)
-            if (maps[k]) d->maps[k] = upload_texture(maps[k], /*wide=*/k == 3);
+            if (maps[k]) d->maps[k] = upload_texture(maps[k], /*wide=*/k != 2);  // the data maps
         d->program = program(shading, mat.texture != nullptr, int(scene.lights.directional.size()), cutoff, mat.affine, map_defines);
         d->model = o.model;
         d->mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
@@ -303,6 +304,7 @@ void GlScene::draw_frame() const {
     for (const auto& d : draws_) {
         glUseProgram(d->program);
         shadows_->bind(d->program);
+        environment_->bind(d->program);
         auto loc = [&](const char* n) { return glGetUniformLocation(d->program, n); };
         glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(lights.ambient));
         for (size_t i = 0; i < lights.directional.size(); ++i) {

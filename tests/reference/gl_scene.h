@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "gl_environment.h"
 #include "gl_shadows.h"
 #include "osmesa_target.h"
 #include "softraster/scene/scene.h"
@@ -29,6 +30,7 @@ private:
     std::map<std::string, GLuint> programs_;  // by their #defines
     std::vector<std::unique_ptr<Draw>> draws_;
     std::unique_ptr<GlShadows> shadows_;
+    std::unique_ptr<GlEnvironment> environment_;
     std::vector<GlShadows::Caster> casters_;  // the opaque triangle draws
 };
 

@@ -108,6 +108,25 @@ uniform vec3 u_emissive;
 uniform sampler2D u_mr_texture;
 uniform sampler2D u_occlusion_texture;
 uniform sampler2D u_emissive_texture;
+#if ENVIRONMENT
+// Image-based lighting (environment_lighting.h), from softraster's precomputed maps.
+uniform vec3 u_env_sh[9];              // E/pi's coefficients
+uniform sampler2D u_env_specular;      // prefiltered levels 0..5 as the mipmap
+uniform sampler2D u_env_lut;           // A, B by (N.V, roughness)
+uniform float u_env_intensity;
+vec3 environment_light(vec3 c_diff, vec3 f0, vec3 n, vec3 v, float nv, float roughness, float occlusion) {
+    vec3 r = 2.0 * dot(n, v) * n - v;
+    vec2 ab = texture(u_env_lut, vec2(nv, roughness)).rg;
+    vec3 k = f0 * ab.x + ab.y;
+    vec3 e = u_env_sh[0] + u_env_sh[1] * n.y + u_env_sh[2] * n.z + u_env_sh[3] * n.x + u_env_sh[4] * (n.x * n.y) +
+             u_env_sh[5] * (n.y * n.z) + u_env_sh[6] * (3.0 * n.z * n.z - 1.0) + u_env_sh[7] * (n.x * n.z) +
+             u_env_sh[8] * (n.x * n.x - n.y * n.y);
+    vec3 diffuse = c_diff * max(e, vec3(0.0)) * (1.0 - k);
+    vec2 uv = vec2(0.5 + atan(r.x, -r.z) * 0.159154943091895, acos(clamp(r.y, -1.0, 1.0)) * 0.318309886183791);
+    vec3 s = textureLod(u_env_specular, uv, clamp(roughness * 5.0, 0.0, 5.0)).rgb;
+    return (diffuse + s * k) * (occlusion * u_env_intensity);
+}
+#endif
 vec3 pbr_light(vec3 c_diff, vec3 f0, float a2, vec3 n, vec3 v, vec3 l, float nv) {
     float nl = dot(n, l);
     if (!(nl > 0.0)) return vec3(0.0);
@@ -230,6 +249,9 @@ void main() {
         vec3 c = positional_light(i, v_world, l) * vis[u_pl_shadow[i]];
         rgb += c * pbr_light(c_diff, f0, a2, n, v, l, nv);
     }
+#endif
+#if ENVIRONMENT
+    rgb += environment_light(c_diff, f0, n, v, nv, max(0.03, roughness), occlusion);
 #endif
     frag = vec4(rgb + emissive, base.a);
 #elif SHADING == 2

@@ -105,17 +105,24 @@ void GlShadows::draw(const std::vector<Caster>& casters) const {
 }
 
 void GlShadows::bind(GLuint program) const {
-    auto loc = [&](const std::string& n) { return glGetUniformLocation(program, n.c_str()); };
-    for (size_t i = 0; i < directional_.size(); ++i) glUniform1i(loc("u_shadow_of[" + std::to_string(i) + "]"), directional_[i]);
-    for (size_t i = 0; i < spot_.size(); ++i) glUniform1i(loc("u_pl_shadow[" + std::to_string(i) + "]"), spot_[i]);
+    // name[index] (appended piece by piece: g++ 12 warns falsely on "a" + std::string + "b")
+    auto loc = [&](const char* name, size_t index) {
+        std::string n = name;
+        n += '[';
+        n += std::to_string(index);
+        n += ']';
+        return glGetUniformLocation(program, n.c_str());
+    };
+    for (size_t i = 0; i < directional_.size(); ++i) glUniform1i(loc("u_shadow_of", i), directional_[i]);
+    for (size_t i = 0; i < spot_.size(); ++i) glUniform1i(loc("u_pl_shadow", i), spot_[i]);
     for (size_t s = 0; s < maps_.size(); ++s) {
         const Map& m = maps_[s];
-        const std::string at = "[" + std::to_string(s) + "]";
-        glUniformMatrix4fv(loc("u_shadow_matrix" + at), 1, GL_FALSE, glm::value_ptr(m.matrix));
-        glUniform3fv(loc("u_shadow_offset" + at), 1, glm::value_ptr(m.offset));
-        glUniform1i(loc("u_shadow_size" + at), m.settings.size);
-        glUniform1i(loc("u_shadow_pcf" + at), m.settings.pcf);
-        glUniform1i(loc("u_shadow_map" + std::to_string(s)), kFirstUnit + int(s));
+        glUniformMatrix4fv(loc("u_shadow_matrix", s), 1, GL_FALSE, glm::value_ptr(m.matrix));
+        glUniform3fv(loc("u_shadow_offset", s), 1, glm::value_ptr(m.offset));
+        glUniform1i(loc("u_shadow_size", s), m.settings.size);
+        glUniform1i(loc("u_shadow_pcf", s), m.settings.pcf);
+        const std::string map = "u_shadow_map" + std::to_string(s);
+        glUniform1i(glGetUniformLocation(program, map.c_str()), kFirstUnit + int(s));
         glActiveTexture(GLenum(GL_TEXTURE0 + kFirstUnit + int(s)));
         glBindTexture(GL_TEXTURE_2D, m.texture);
     }

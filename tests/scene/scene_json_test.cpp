@@ -252,3 +252,32 @@ TEST(SceneJson, Shadows) {
         EXPECT_NE(err.find(expected), std::string::npos) << "got: " << err << "\nwanted: " << expected;
     }
 }
+
+// Version 2's environment: the picture relative to the scene file, the intensity, the errors.
+TEST(SceneJson, Environment) {
+    std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n";
+    for (int k = 0; k < 8; ++k) hdr += std::string("\x80\x80\x80\x81", 4);
+    write_scene("env.hdr", hdr);
+    write_scene("cut.hdr", hdr.substr(0, hdr.size() - 4));
+    auto with_env = [](const std::string& env, int version = 2) {
+        std::string s = kMinimal;
+        s.replace(s.find("\"version\": 1"), 12, "\"version\": " + std::to_string(version));
+        return s.replace(s.find("\"objects\""), 9, "\"environment\": " + env + ", \"objects\"");
+    };
+    const Scene s = load_scene(write_scene("env.json", with_env(R"({"file": "env.hdr", "intensity": 0.5})")));
+    ASSERT_TRUE(s.environment);
+    EXPECT_EQ(s.environment->intensity, 0.5f);
+    EXPECT_NEAR(environment_irradiance(*s.environment, {0, 1, 0}).r, 1.0f, 1e-3f);
+    const std::pair<std::string, const char*> errors[] = {
+        {with_env(R"({"file": "env.hdr"})", 1), "environment: a version 2 key in a version 1 file"},
+        {with_env(R"({"file": "missing.hdr"})"), "environment.file: "},
+        {with_env(R"({"file": "cut.hdr"})"), "cut.hdr: corrupt Radiance HDR (truncated)"},
+        {with_env(R"({"file": "env.hdr", "intensity": -1})"), "environment.intensity: value -1 out of range"},
+        {with_env(R"({"file": "env.hdr", "rotation": 90})"), "environment.rotation: unknown key"},
+        {with_env(R"({"intensity": 1})"), "environment.file: required field is missing"},
+    };
+    for (const auto& [json, expected] : errors) {
+        const std::string err = error_of(json);
+        EXPECT_NE(err.find(expected), std::string::npos) << "got: " << err << "\nwanted: " << expected;
+    }
+}

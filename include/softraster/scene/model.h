@@ -57,6 +57,7 @@ struct ModelPicture {
     ColorSpace color_space = ColorSpace::Srgb;  // glTF's: color textures and the picture sRGB-encoded
     ToneMapping tone_mapping;
     bool shadows = false;  // shadow maps for the key light or the file's lights (model_scene)
+    std::shared_ptr<const EnvironmentLighting> environment;  // image-based lighting for pbr materials
 };
 
 // A scene that shows the model: a perspective camera (30 degrees) whose view the model's

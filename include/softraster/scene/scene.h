@@ -14,6 +14,7 @@
 #include "softraster/image.h"
 #include "softraster/render_state.h"
 #include "softraster/scene/mesh.h"
+#include "softraster/shading/environment_lighting.h"
 #include "softraster/shading/texture.h"
 #include "softraster/shading/tone_mapping.h"
 
@@ -132,6 +133,8 @@ struct Scene {
     // encodes the picture, so that light is lit and blended linearly; and the tone mapping.
     ColorSpace color_space = ColorSpace::Linear;
     ToneMapping tone_mapping;
+    // Version 2: image-based lighting of pbr surfaces (docs/scene-format.md "Environment lighting").
+    std::shared_ptr<const EnvironmentLighting> environment;
     Camera camera;
     Lights lights;
     std::vector<SceneObject> objects;

@@ -158,7 +158,8 @@ struct SurfaceShader {
             if (u->occlusion_texture) occlusion = 1.0f + u->occlusion_strength * (u->occlusion_texture->sample(in.uv, d, u->sampler).r - 1.0f);
             if (u->emissive_texture) emissive *= glm::vec3(u->emissive_texture->sample(in.uv, d, u->sampler));
         }
-        const PbrSurface s = pbr_surface(glm::vec3(base), metallic, std::max(kMinRoughness, roughness));
+        const float clamped_roughness = std::max(kMinRoughness, roughness);
+        const PbrSurface s = pbr_surface(glm::vec3(base), metallic, clamped_roughness);
         glm::vec3 n = glm::normalize(in.normal);
         if constexpr (Varyings::kTangent) {
             const glm::vec4 dv = in.uv_derivatives;
@@ -177,6 +178,7 @@ struct SurfaceShader {
             const glm::vec3 c = positional_light(light, in.world, l) * vis[size_t(light.shadow)];
             rgb += c * pbr_light(s, n, v, l, nv);
         }
+        if (u->environment) rgb += environment_light(*u->environment, s.diffuse, s.f0, n, v, nv, clamped_roughness, occlusion);
         return rgb + emissive;
     }
 
@@ -202,7 +204,8 @@ struct SurfaceShader {
                 emissive = {emissive.x * t[0], emissive.y * t[1], emissive.z * t[2]};
             }
         }
-        const PbrSurface8 s = pbr_surface(vec3x8{base[0], base[1], base[2]}, metallic, max(splat(kMinRoughness), roughness));
+        const f8 clamped_roughness = max(splat(kMinRoughness), roughness);
+        const PbrSurface8 s = pbr_surface(vec3x8{base[0], base[1], base[2]}, metallic, clamped_roughness);
         const vec3x8 normal{in[Varyings::kNormalAt], in[Varyings::kNormalAt + 1], in[Varyings::kNormalAt + 2]};
         vec3x8 n = normalize(normal);
         if constexpr (Varyings::kTangent) {
@@ -235,6 +238,14 @@ struct SurfaceShader {
             const vec3x8 c = positional_light(light, p, l);
             const f8& k = vis[size_t(light.shadow)];
             add({c.x * k, c.y * k, c.z * k}, l);
+        }
+        if (u->environment) {  // one fragment at a time: a handful of table lookups each
+            for (int i = 0; i < kLanes; ++i) {
+                const glm::vec3 e = environment_light(*u->environment, {s.diffuse.x[i], s.diffuse.y[i], s.diffuse.z[i]},
+                                                      {s.f0.x[i], s.f0.y[i], s.f0.z[i]}, {n.x[i], n.y[i], n.z[i]}, {v.x[i], v.y[i], v.z[i]},
+                                                      nv[i], clamped_roughness[i], occlusion[i]);
+                rgb.x[i] += e.x, rgb.y[i] += e.y, rgb.z[i] += e.z;
+            }
         }
         return {rgb.x + emissive.x, rgb.y + emissive.y, rgb.z + emissive.z};
     }

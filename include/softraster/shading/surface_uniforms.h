@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "softraster/shading/environment_lighting.h"
 #include "softraster/shading/lighting.h"
 #include "softraster/shading/texture.h"
 #include "softraster/shading/tone_mapping.h"
@@ -34,6 +35,7 @@ struct SurfaceUniforms {
     const Texture* emissive_texture = nullptr;
     const Texture* normal_texture = nullptr;  // with it the draw's mesh carries tangents (normal_mapping.h)
     float normal_scale = 1.0f;
+    const EnvironmentLighting* environment = nullptr;  // pbr: image-based lighting (environment_lighting.h)
     ToneMapping tone_mapping;  // exposure and tone curve, the shader's last step (not for normals and depth)
 };
 
