@@ -91,6 +91,7 @@ void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size) {
     cmd.add_option("--env-intensity", opt.env_intensity, "The environment's light multiplied by this")
         ->check(CLI::Range(0.0, 1e6))
         ->capture_default_str();
+    cmd.add_flag("--env-background", opt.env_background, "Show the --env picture behind the model instead of --background");
     cmd.add_flag("-v,--verbose", opt.verbose, "Also say what the file has that is not drawn");
 }
 
@@ -107,12 +108,12 @@ ModelPicture ModelOptions::picture(int default_size) const {
     if (!shading.empty()) p.shading = kShadings.at(shading);
     p.camera = camera;
     p.shadows = shadows;
-    if (!env.empty()) p.environment = std::make_shared<const EnvironmentLighting>(prepare_environment(read_environment(env), env_intensity));
+    if (!env.empty()) p.environment = std::make_shared<const EnvironmentLighting>(prepare_environment(read_environment(env), env_intensity, env_background));
     return p;
 }
 
 bool ModelOptions::any_given(const CLI::App& cmd) const {
-    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure", "--shadows", "--env", "--env-intensity"})
+    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure", "--shadows", "--env", "--env-intensity", "--env-background"})
         if (cmd.count(name) > 0) return true;
     return false;
 }

@@ -17,6 +17,7 @@ struct ModelOptions {
     bool shadows = false;
     std::string env;
     float env_intensity = 1.0f;
+    bool env_background = false;
     bool verbose = false;
 
     // The picture these options describe; `default_size` when --size is not given.

@@ -364,13 +364,14 @@ struct Loader {
 
     // Image-based lighting (docs/scene-format.md "Environment lighting").
     std::shared_ptr<const EnvironmentLighting> read_environment(const Node& n) {
-        n.expect_object({"file", "intensity"});
+        n.expect_object({"file", "intensity", "background"});
         const std::string rel = n["file"].string();
         if (rel.empty()) n["file"].fail("empty file path");
         const float intensity = n.has("intensity") ? float(n["intensity"].number_in(0, 1e6, false, false, "0 to 1e6")) : 1.0f;
+        const bool background = n.has("background") && n["background"].boolean();
         try {
             return std::make_shared<const EnvironmentLighting>(
-                prepare_environment(softraster::read_environment((dir / rel).lexically_normal()), intensity));
+                prepare_environment(softraster::read_environment((dir / rel).lexically_normal()), intensity, background));
         } catch (const InputError& e) {
             n["file"].fail(e.what());
         }

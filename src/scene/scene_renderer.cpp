@@ -9,6 +9,7 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "scene/record_sky_draw.h"
 #include "scene/record_surface_draw.h"
 #include "softraster/context.h"
 #include "softraster/pipeline/resolve.h"
@@ -200,10 +201,26 @@ struct SceneRenderer::ShadowPass {
     }
 };
 
+// The environment behind the scene: one triangle, no depth, before every object.
+struct SceneRenderer::Sky {
+    SkyShader shader;
+    std::array<SkyVertex, 3> vertices;
+    void record(Context& ctx) const {
+        RenderState st;
+        st.cull = CullMode::None;
+        st.depth_test = st.depth_write = false;
+        ctx.state = st;
+        record_sky_draw(ctx, shader, vertices);
+    }
+};
+
 SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     : scene_(scene), pool_(threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr) {
     const glm::mat4 view = view_matrix(scene.camera);
     const glm::mat4 proj = projection_matrix(scene.camera, scene.width, scene.height);
+    if (scene.environment && scene.environment->background)
+        sky_ = std::make_unique<Sky>(
+            Sky{{&scene.environment->picture, scene.environment->intensity, scene.tone_mapping}, sky_triangle(view, proj)});
     for (const PunctualLight& l : scene.lights.punctual) positional_lights_.push_back(shader_numbers(l));
     LightSet lights = light_set(scene.lights, positional_lights_);
     // Shadows: directional lights first, then spot lights, each with its pass.
@@ -311,6 +328,7 @@ RenderStats SceneRenderer::render(Framebuffer& fb) const {
     if (!ctx_) {
         ctx_ = std::make_unique<Context>(fb, pool_.get());
         ctx_->clear(scene_.background, 1.0f, scene_.clear_stencil);
+        if (sky_) sky_->record(*ctx_);
         for (const Draw& d : draws_) draw_object(*ctx_, d);
     }
     ctx_->set_framebuffer(fb);

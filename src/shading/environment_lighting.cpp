@@ -212,9 +212,11 @@ bool radiance_complete(const std::string& b, int w, int h) {
 
 }  // namespace
 
-EnvironmentLighting prepare_environment(const EquirectImage& picture, float intensity) {
+EnvironmentLighting prepare_environment(const EquirectImage& picture, float intensity, bool background) {
     EnvironmentLighting e;
     e.intensity = intensity;
+    e.picture = picture;
+    e.background = background;
     std::vector<EquirectImage> pyramid{base_level(picture)};
     while (int(pyramid.size()) < EnvironmentLighting::kLevels) pyramid.push_back(half(pyramid.back()));
     e.irradiance = irradiance(pyramid[0]);

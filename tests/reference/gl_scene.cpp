@@ -158,7 +158,11 @@ void upload(GlScene::Draw& d, const softraster::Mesh& mesh, const std::vector<ui
 }  // namespace
 
 GlScene::GlScene(const softraster::Scene& scene)
-    : scene_(scene), shadows_(std::make_unique<GlShadows>(scene)), environment_(std::make_unique<GlEnvironment>(scene.environment.get())) {
+    : scene_(scene),
+      shadows_(std::make_unique<GlShadows>(scene)),
+      environment_(std::make_unique<GlEnvironment>(scene.environment.get(), softraster::view_matrix(scene.camera),
+                                                   softraster::projection_matrix(scene.camera, scene.width, scene.height),
+                                                   scene.tone_mapping)) {
 
     const glm::mat4 view = softraster::view_matrix(scene.camera);
     const glm::mat4 proj = softraster::projection_matrix(scene.camera, scene.width, scene.height);
@@ -297,6 +301,7 @@ void GlScene::draw_frame() const {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_SCISSOR_TEST);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    environment_->draw_sky();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glEnable(GL_MULTISAMPLE);

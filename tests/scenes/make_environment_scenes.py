@@ -67,10 +67,11 @@ def write_hdr(path, w, h):
         f.write(data)
 
 
-def scene(name, objects, lights=None, camera=None, width=192, height=128, **image):
+def scene(name, objects, lights=None, camera=None, width=192, height=128, environment=None, **image):
     img = {"width": width, "height": height, "background": [0.05, 0.06, 0.08, 1], **image}
     camera = camera or {"eye": [0, 1.6, 4.6], "target": [0, 0.4, 0], "fov_y": 45}
-    s = {"version": 2, "image": img, "camera": camera, "environment": {"file": "textures/sky_128.hdr"}, "objects": objects}
+    env = dict({"file": "textures/sky_128.hdr"}, **(environment or {}))
+    s = {"version": 2, "image": img, "camera": camera, "environment": env, "objects": objects}
     if lights:
         s["lights"] = lights
     write('env_' + name + '.json', json.dumps(s, indent=1))
@@ -103,6 +104,12 @@ def main():
     scene('maps_shadowed_sun', objects, {"ambient": [0.0, 0.0, 0.0],
                                          "directional": [{"direction": [0.5, -0.55, 0.67], "color": [1.5, 1.4, 1.2], "shadow": {"size": 512}}]},
           samples=4, color_space="srgb")
+    # The picture behind the scene: a wide view across the horizon and the sun, the spheres
+    # in front; and looking up past them, 4x MSAA, sRGB, Reinhard.
+    scene('sky_background', spheres, camera={"eye": [0, 0.3, 5], "target": [-1, 0.9, 0], "fov_y": 75},
+          environment={"background": True, "intensity": 0.8})
+    scene('sky_msaa_srgb_reinhard', spheres[:5], camera={"eye": [0.3, 0.2, 5], "target": [-0.6, 1.4, 0], "fov_y": 60},
+          environment={"background": True}, samples=4, color_space="srgb", tone_mapping="reinhard", exposure=1.5)
 
 
 if __name__ == '__main__':

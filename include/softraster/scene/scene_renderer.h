@@ -61,9 +61,11 @@ public:
 
 private:
     struct ShadowPass;  // a light's shadow map and the depth pass that fills it (scene_renderer.cpp)
+    struct Sky;         // the environment behind the scene (sky_shader.h)
     const Scene& scene_;
     std::vector<PositionalLight> positional_lights_;  // the draws' LightSets point here
     std::vector<std::unique_ptr<ShadowPass>> shadow_passes_;  // and here; drawn first in each frame
+    std::unique_ptr<Sky> sky_;                                // drawn right after the clear
     std::vector<Draw> draws_;  // in draw order
     std::unique_ptr<WorkerPool> pool_;
     mutable std::unique_ptr<Context> ctx_;  // the recorded frame

@@ -41,6 +41,8 @@ struct EnvironmentLighting {
     std::array<EquirectImage, kLevels> specular;  // level k is (256 >> k) x (128 >> k)
     std::vector<glm::vec2> lut;                   // A, B at ((i + 1/2)/32, (j + 1/2)/32), row j by roughness
     float intensity = 1.0f;
+    EquirectImage picture;    // as read: the background (sky_shader.h)
+    bool background = false;  // the picture behind the scene instead of its background color
 };
 
 // Where a direction falls in an equirectangular picture, in [0, 1]^2 (u across, v down).
@@ -109,6 +111,6 @@ inline glm::vec3 environment_light(const EnvironmentLighting& e, const glm::vec3
 // InputError naming the file for a missing, truncated or corrupt one.
 EquirectImage read_environment(const std::filesystem::path& path);
 // The maps (the spherical harmonics, the prefiltered levels, the lookup table).
-EnvironmentLighting prepare_environment(const EquirectImage& picture, float intensity);
+EnvironmentLighting prepare_environment(const EquirectImage& picture, float intensity, bool background = false);
 
 }  // namespace softraster
