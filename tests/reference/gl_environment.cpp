@@ -1,4 +1,5 @@
 #include "gl_environment.h"
+#include "gl_shaders.h"
 
 #include <array>
 #include <cstddef>
@@ -40,21 +41,6 @@ void main() {
 }
 )";
 
-GLuint sky_program() {
-    const GLuint program = glCreateProgram();
-    for (const auto& [type, src] : {std::pair{GLenum(GL_VERTEX_SHADER), kSkyVertexShader}, std::pair{GLenum(GL_FRAGMENT_SHADER), kSkyFragmentShader}}) {
-        const GLuint s = glCreateShader(type);
-        glShaderSource(s, 1, &src, nullptr);
-        glCompileShader(s);
-        glAttachShader(program, s);
-    }
-    glLinkProgram(program);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) throw std::runtime_error("GLSL link error (sky)");
-    return program;
-}
-
 }  // namespace
 
 GlEnvironment::GlEnvironment(const softraster::EnvironmentLighting* e, const glm::mat4& view, const glm::mat4& projection,
@@ -62,7 +48,7 @@ GlEnvironment::GlEnvironment(const softraster::EnvironmentLighting* e, const glm
     : env_(e), tone_(tone) {
     if (!env_) return;
     if (env_->background) {
-        sky_program_ = sky_program();
+        sky_program_ = standalone_program(kSkyVertexShader, kSkyFragmentShader, "sky");
         glGenTextures(1, &sky_texture_);
         glBindTexture(GL_TEXTURE_2D, sky_texture_);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);

@@ -1,6 +1,9 @@
 // The reference's GLSL: the scene format's formulas as the shaders llvmpipe runs.
 #include "gl_shaders.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace glref {
 
 // Each (shading model, texture, light count) combination is compiled as its own program,
@@ -312,5 +315,21 @@ void main() {
 const char* const kDepthFragmentShader = R"(#version 330 core
 void main() {}
 )";
+
+GLuint standalone_program(const char* vertex, const char* fragment, const char* what) {
+    const GLuint program = glCreateProgram();
+    for (const auto& [type, src] : {std::pair{GLenum(GL_VERTEX_SHADER), vertex}, std::pair{GLenum(GL_FRAGMENT_SHADER), fragment}}) {
+        const GLuint s = glCreateShader(type);
+        glShaderSource(s, 1, &src, nullptr);
+        glCompileShader(s);
+        glAttachShader(program, s);
+        glDeleteShader(s);  // freed with the program
+    }
+    glLinkProgram(program);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) throw std::runtime_error(std::string("GLSL link error (") + what + ")");
+    return program;
+}
 
 }  // namespace glref

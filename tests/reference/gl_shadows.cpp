@@ -8,24 +8,6 @@
 #include <glm/gtc/type_ptr.hpp>
 
 namespace glref {
-namespace {
-
-GLuint depth_program() {
-    const GLuint program = glCreateProgram();
-    for (const auto& [type, src] : {std::pair{GLenum(GL_VERTEX_SHADER), kDepthVertexShader}, std::pair{GLenum(GL_FRAGMENT_SHADER), kDepthFragmentShader}}) {
-        const GLuint s = glCreateShader(type);
-        glShaderSource(s, 1, &src, nullptr);
-        glCompileShader(s);
-        glAttachShader(program, s);
-    }
-    glLinkProgram(program);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) throw std::runtime_error("GLSL link error (depth pass)");
-    return program;
-}
-
-}  // namespace
 
 GlShadows::GlShadows(const softraster::Scene& scene) {
     const softraster::Bounds bounds = softraster::shadow_bounds(scene);
@@ -59,7 +41,7 @@ GlShadows::GlShadows(const softraster::Scene& scene) {
         for (int& k : *list)
             if (k < 0) k = count();
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
-    if (!maps_.empty()) program_ = depth_program();
+    if (!maps_.empty()) program_ = standalone_program(kDepthVertexShader, kDepthFragmentShader, "depth pass");
 }
 
 GlShadows::~GlShadows() {
