@@ -215,8 +215,8 @@ bool radiance_complete(const std::string& b, int w, int h) {
 EnvironmentLighting prepare_environment(const EquirectImage& picture, float intensity, bool background) {
     EnvironmentLighting e;
     e.intensity = intensity;
-    e.picture = picture;
     e.background = background;
+    if (background) e.picture = picture;  // (only the sky reads it: a large picture is not kept for nothing)
     std::vector<EquirectImage> pyramid{base_level(picture)};
     while (int(pyramid.size()) < EnvironmentLighting::kLevels) pyramid.push_back(half(pyramid.back()));
     e.irradiance = irradiance(pyramid[0]);
