@@ -132,7 +132,9 @@ TEST(Blend, EightLanesEqualOneAtATime) {
                 blend_group<false>(BlendSettings(st), row.data(), 0, 8, write, src);
             } else if (mode == BlendMode::Custom) {
                 RowGroups groups;
-                groups.add(0, write, quantize_pack_rgba8(src));
+                simd::i8 packed;
+                quantize_pack_rgba8(src, packed);
+                groups.add(0, write, packed);
                 blend_row(BlendSettings(st), row.data(), 8, groups);
             } else {
                 blend_group<true>(BlendSettings(st), row.data(), 0, 8, write, src);
@@ -170,7 +172,9 @@ TEST(Blend, RowOfGroupsEqualsOnePixelAtATime) {
                 if (write[l])
                     expected[size_t(x + l)] = blend(settings, glm::vec4(src[0][l], src[1][l], src[2][l], src[3][l]), row[size_t(x + l)]);
             }
-            groups.add(x, write, quantize_pack_rgba8(src));
+            simd::i8 packed;
+            quantize_pack_rgba8(src, packed);
+            groups.add(x, write, packed);
         }
         blend_row(settings, row.data(), width, groups);
         ASSERT_EQ(std::memcmp(row.data(), expected.data(), row.size() * sizeof(Rgba8)), 0) << "trial " << trial;

@@ -128,7 +128,8 @@ private:
         for (size_t k = 0; k < size_t(N); ++k) var[k] = load(var_[k]);
         std::array<f8, 4> rgba;
         shader_->fragment_batch(var, load(z_), front_facing_, rgba);
-        const i8 packed = quantize_pack_rgba8(rgba, color_space_);
+        i8 packed;
+        quantize_pack_rgba8(rgba, color_space_, packed);
         for (int l = 0; l < count; ++l) {
             const size_t slot = size_t(first + l);
             Rgba8 c;

@@ -215,17 +215,20 @@ inline void merge_fragment(const BlendSettings& b, Rgba8* color, unsigned mask, 
 // ---- eight pixels of a row at once (see tile_back_end.h)
 
 
-// Eight colors (r, g, b, a lanes) quantized to 8 bits per channel, packed as Rgba8.
-inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c) {
+// Eight colors (r, g, b, a lanes) quantized to 8 bits per channel, packed as Rgba8. (The
+// result by reference: a 32-byte vector returned by value crosses the AVX2 and generic
+// copies' different calling conventions when the helper is not inlined, as in the
+// sanitizer builds.)
+inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, simd::i8& out) {
     using simd::quantize_unorm8;
-    return quantize_unorm8(c[0]) | (quantize_unorm8(c[1]) << 8) | (quantize_unorm8(c[2]) << 16) | (quantize_unorm8(c[3]) << 24);
+    out = quantize_unorm8(c[0]) | (quantize_unorm8(c[1]) << 8) | (quantize_unorm8(c[2]) << 16) | (quantize_unorm8(c[3]) << 24);
 }
 // The same as a framebuffer of that color space stores them (sRGB: r, g, b encoded).
-inline simd::i8 quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace space) {
-    if (space == ColorSpace::Linear) return quantize_pack_rgba8(c);
+inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace space, simd::i8& out) {
+    if (space == ColorSpace::Linear) return quantize_pack_rgba8(c, out);
     simd::i8 r, g, b;
     srgb::encode(c[0], r), srgb::encode(c[1], g), srgb::encode(c[2], b);
-    return r | (g << 8) | (b << 16) | (simd::quantize_unorm8(c[3]) << 24);
+    out = r | (g << 8) | (b << 16) | (simd::quantize_unorm8(c[3]) << 24);
 }
 
 // Blends colors c (r, g, b, a lanes) into the group of eight RGBA8 pixels from row[x] on
@@ -237,7 +240,9 @@ inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int wi
     const BlendMode mode = settings.mode;
     const i8 old = simd::load_group<i8>(row, x, width);
     if (!Blended || mode == BlendMode::Opaque) {
-        simd::store_group(row, x, width, simd::select(write, quantize_pack_rgba8(c, settings.color_space), old));
+        simd::i8 packed;
+        quantize_pack_rgba8(c, settings.color_space, packed);
+        simd::store_group(row, x, width, simd::select(write, packed, old));
         return;
     }
     const i8 sr = simd::quantize_unorm8(c[0]), sg = simd::quantize_unorm8(c[1]), sb = simd::quantize_unorm8(c[2]),

@@ -214,7 +214,9 @@ struct TileBackEnd {
                     if (blend.mode == BlendMode::Custom) {  // shaded now, blended with the row's other groups
                         std::array<f8, 4> rgba;
                         shade(i, j, z, rgba);
-                        pending.add(x, pass, quantize_pack_rgba8(rgba));
+                        simd::i8 packed;
+                        quantize_pack_rgba8(rgba, packed);
+                        pending.add(x, pass, packed);
                         return;
                     }
                 }
