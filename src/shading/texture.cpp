@@ -50,6 +50,17 @@ std::vector<Rgba8> downsample(const std::vector<Rgba8>& src, int sw, int sh, int
 inline int exponent_of(float x) { return int((std::bit_cast<uint32_t>(x) >> 23) & 255u) - 127; }
 inline float mantissa_of(float x) { return std::bit_cast<float>((std::bit_cast<uint32_t>(x) & 0x007fffffu) | 0x3f800000u); }
 
+// Anisotropic filtering as EXT_texture_filter_anisotropic describes it: with P_max and P_min
+// the lengths of the footprint's longer and shorter axes (in texels of level 0), N =
+// min(ceil(P_max / P_min), max) lookups along the longer axis, each at the level of detail
+// of P_max / N. N is the smallest n with n^2 P_min^2 >= P_max^2, found by comparisons (exact,
+// the same on every path, no square root); a footprint of zero width takes the maximum.
+inline int probe_count(float rmax, float rmin, int max_anisotropy) {
+    int n = 1;
+    for (int k = 1; k < max_anisotropy; ++k) n += float(k * k) * rmin < rmax ? 1 : 0;
+    return n;
+}
+
 }  // namespace
 
 Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpace::Srgb) {
@@ -97,11 +108,17 @@ LevelChoice Texture::select_lod(const UvDerivatives& d, const Sampler& s) const 
     const float w = float(width()), h = float(height());
     const float ax = d.dudx * w, bx = d.dvdx * h, ay = d.dudy * w, by = d.dvdy * h;
     const float rx = ax * ax + bx * bx, ry = ay * ay + by * by;
-    const float rho2 = rx > ry ? rx : ry;
+    float rho2 = rx > ry ? rx : ry;
     const int last = levels() - 1;
     LevelChoice c;
     c.minified = rho2 > 1.0f;
-    if (!c.minified || s.mip == MipFilter::None) return c;
+    if (!c.minified) return c;
+    if (s.max_anisotropy > 1) {  // N lookups along the longer axis; its level from rho / N
+        c.probes = probe_count(rho2, rx > ry ? ry : rx, s.max_anisotropy);
+        c.axis_u = rx > ry ? d.dudx : d.dudy, c.axis_v = rx > ry ? d.dvdx : d.dvdy;
+        rho2 = rho2 / float(c.probes * c.probes);  // (N = 1: the isotropic rho^2, bit for bit)
+    }
+    if (s.mip == MipFilter::None) return c;
     if (s.mip == MipFilter::Nearest) {
         c.level0 = c.level1 = std::clamp((exponent_of(rho2) + 1) >> 1, 0, last);
         return c;
@@ -147,12 +164,22 @@ glm::vec4 Texture::sample(glm::vec2 uv, const UvDerivatives& d, const Sampler& s
     if (!s.uses_lod()) return sample(uv, s);
     const LevelChoice c = select_lod(d, s);
     if (!c.minified) return sample(uv, s);
-    auto at = [&](int level) {
-        return s.min == Filter::Nearest ? sample_level<Filter::Nearest>(level, uv, s) : sample_level<Filter::Bilinear>(level, uv, s);
+    auto at = [&](int level, glm::vec2 p) {
+        return s.min == Filter::Nearest ? sample_level<Filter::Nearest>(level, p, s) : sample_level<Filter::Bilinear>(level, p, s);
     };
-    const glm::vec4 c0 = at(c.level0);
-    if (c.weight == 0.0f) return c0;
-    return c0 + (at(c.level1) - c0) * c.weight;
+    auto lookup = [&](glm::vec2 p) {
+        const glm::vec4 c0 = at(c.level0, p);
+        if (c.weight == 0.0f) return c0;
+        return c0 + (at(c.level1, p) - c0) * c.weight;
+    };
+    if (c.probes == 1) return lookup(uv);
+    glm::vec4 sum(0.0f);
+    for (int k = 0; k < c.probes; ++k) {
+        const float t = float(2 * k + 1) / float(2 * c.probes) - 0.5f;
+        sum += lookup(glm::vec2(uv.x + t * c.axis_u, uv.y + t * c.axis_v));
+    }
+    const float n = float(c.probes);
+    return {sum.x / n, sum.y / n, sum.z / n, sum.w / n};
 }
 
 // ---- eight lookups at once
@@ -225,14 +252,22 @@ template <bool Wide, bool Srgb>
 void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
     using simd::select, simd::splat, simd::splat_i, simd::to_float;
     // Which level(s) and filter each lane takes (select_lod).
-    i8 level0 = splat_i(0), level1 = splat_i(0), nearest = splat_i(s.mag == Filter::Nearest ? -1 : 0);
-    f8 weight = splat(0.0f);
+    i8 level0 = splat_i(0), level1 = splat_i(0), nearest = splat_i(s.mag == Filter::Nearest ? -1 : 0), probes = splat_i(1);
+    f8 weight = splat(0.0f), axis_u = splat(0.0f), axis_v = splat(0.0f);
     if (s.uses_lod()) {
         const f8 ax = d[0] * float(width()), bx = d[1] * float(height()), ay = d[2] * float(width()), by = d[3] * float(height());
         const f8 rx = ax * ax + bx * bx, ry = ay * ay + by * by;
-        const f8 rho2 = select(rx > ry, rx, ry);
+        f8 rho2 = select(rx > ry, rx, ry);
         const i8 minified = rho2 > 1.0f;
         nearest = select(minified, splat_i(s.min == Filter::Nearest ? -1 : 0), nearest);
+        if (s.max_anisotropy > 1) {  // probe_count and the long axis, lane by lane
+            const f8 rmin = select(rx > ry, ry, rx);
+            probes = splat_i(1);
+            for (int k = 1; k < s.max_anisotropy; ++k) probes = select(to_float(splat_i(k * k)) * rmin < rho2, probes + 1, probes);
+            probes = select(minified, probes, splat_i(1));
+            axis_u = select(rx > ry, d[0], d[2]), axis_v = select(rx > ry, d[1], d[3]);
+            rho2 = rho2 / to_float(probes * probes);
+        }
         const i8 bits = std::bit_cast<i8>(rho2);
         const i8 exponent = ((bits >> 23) & 255) - 127;
         const int last = levels() - 1;
@@ -275,12 +310,11 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
     // sample_level: nearest lanes take the bilinear formula at x = u with weights 0, which
     // gives exactly the one texel (t * 1 + t' * 0 = t).
     const f8 half = select(nearest, splat(0.0f), splat(0.5f));
-    const f8 ur = reduce8(u, s.wrap_s), vr = reduce8(v, s.wrap_t);
     const uint32_t* texels = this->texels();
     const std::array<float, 256>& decode = srgb::tables().decode;
     const bool has_border = s.wrap_s == Wrap::Border || s.wrap_t == Wrap::Border;
-    auto at_level = [&](i8 level, std::array<f8, 4>& out) {
-        const LaneLevels l = lane_levels(level);
+    const LaneLevels levels0 = lane_levels(level0), levels1 = two_levels ? lane_levels(level1) : levels0;
+    auto at_level = [&](const LaneLevels& l, const f8& ur, const f8& vr, std::array<f8, 4>& out) {
         const f8 x = ur * to_float(l.width) - half, y = vr * to_float(l.height) - half;
         const i8 i0 = floor_to_int8(x), j0 = floor_to_int8(y);
         const f8 fx = select(nearest, splat(0.0f), x - to_float(i0)), fy = select(nearest, splat(0.0f), y - to_float(j0));
@@ -309,12 +343,29 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
             out[k] = bottom * (1.0f - fy) + top * fy;
         }
     };
-    at_level(level0, rgba);
-    if (two_levels) {
-        std::array<f8, 4> c1;
-        at_level(level1, c1);
-        for (size_t k = 0; k < 4; ++k) rgba[k] = rgba[k] + (c1[k] - rgba[k]) * weight;
+    auto lookup = [&](const f8& pu, const f8& pv, std::array<f8, 4>& out) {
+        const f8 ur = reduce8(pu, s.wrap_s), vr = reduce8(pv, s.wrap_t);
+        at_level(levels0, ur, vr, out);
+        if (two_levels) {
+            std::array<f8, 4> c1;
+            at_level(levels1, ur, vr, c1);
+            for (size_t k = 0; k < 4; ++k) out[k] = out[k] + (c1[k] - out[k]) * weight;
+        }
+    };
+    if (s.max_anisotropy <= 1) return lookup(u, v, rgba);
+    int most_probes = 1;
+    for (int lane = 0; lane < simd::kLanes; ++lane) most_probes = std::max(most_probes, int(probes[lane]));
+    if (most_probes == 1) return lookup(u, v, rgba);
+    // The anisotropic lookups (sample()'s loop): a lane adds its k-th only while k < its N.
+    rgba = {splat(0.0f), splat(0.0f), splat(0.0f), splat(0.0f)};
+    for (int k = 0; k < most_probes; ++k) {
+        const f8 t = to_float(splat_i(2 * k + 1)) / to_float(probes + probes) - 0.5f;
+        const i8 used = splat_i(k) < probes, moved = probes > 1;  // (one probe: uv itself, as sample() reads it)
+        std::array<f8, 4> probe;
+        lookup(select(moved, u + t * axis_u, u), select(moved, v + t * axis_v, v), probe);
+        for (size_t c = 0; c < 4; ++c) rgba[c] = rgba[c] + select(used, probe[c], splat(0.0f));
     }
+    for (size_t c = 0; c < 4; ++c) rgba[c] = rgba[c] / to_float(probes);
 }
 
 // In the CPU's best copy (simd.h).

@@ -1,5 +1,5 @@
 // Texture sampling: orientation, nearest and bilinear filtering, the four wrap modes, the
-// mipmap chain, the level of detail and trilinear filtering.
+// mipmap chain, the level of detail, trilinear and anisotropic filtering.
 #include <bit>
 #include <cmath>
 #include <random>
@@ -205,6 +205,93 @@ TEST(Texture, MirrorAndBorderWrapping) {
     EXPECT_EQ(t.sample(glm::vec2(1.25f, 3.0f), mixed), glm::vec4(1, 0, 0, 1));  // u wraps, v holds the top row
 }
 
+// Anisotropic filtering: N = ceil(P_max / P_min) lookups (at most the sampler's limit) along
+// the footprint's long axis, each at the level of detail of P_max / N.
+TEST(Texture, AnisotropicProbeCountAndLevel) {
+    const Texture t = pattern_texture(256, 256);  // 9 levels
+    Sampler s = Sampler::plain(Filter::Bilinear, Wrap::Repeat);
+    s.mip = MipFilter::Linear;
+    s.max_anisotropy = 16;
+    auto footprint = [](float along_x, float along_y) {  // texels per pixel step, x along u, y along v
+        return UvDerivatives{along_x / 256.0f, 0.0f, 0.0f, along_y / 256.0f};
+    };
+    LevelChoice c = t.select_lod(footprint(32.0f, 4.0f), s);  // 8 : 1
+    EXPECT_EQ(c.probes, 8);
+    EXPECT_EQ(c.level0, 2);  // log2(32 / 8)
+    EXPECT_EQ(c.weight, 0.0f);
+    EXPECT_EQ(c.axis_u, 32.0f / 256.0f);
+    EXPECT_EQ(c.axis_v, 0.0f);
+    c = t.select_lod(footprint(4.0f, 10.0f), s);  // 2.5 : 1, the long axis along y
+    EXPECT_EQ(c.probes, 3);
+    EXPECT_EQ(c.axis_u, 0.0f);
+    EXPECT_EQ(c.axis_v, 10.0f / 256.0f);
+    EXPECT_EQ(t.select_lod(footprint(64.0f, 0.0f), s).probes, 16);  // no width: the limit
+    EXPECT_EQ(t.select_lod(footprint(64.0f, 2.0f), s).probes, 16);  // 32 : 1, capped
+    EXPECT_EQ(t.select_lod(footprint(64.0f, 2.0f), s).level0, 2);   // log2(64 / 16)
+    EXPECT_EQ(t.select_lod(footprint(8.0f, 8.0f), s).probes, 1);    // round: one lookup
+    EXPECT_EQ(t.select_lod(footprint(0.5f, 0.01f), s).probes, 1);   // magnified: no probes
+    s.max_anisotropy = 4;
+    c = t.select_lod(footprint(32.0f, 4.0f), s);
+    EXPECT_EQ(c.probes, 4);
+    EXPECT_EQ(c.level0, 3);  // log2(32 / 4)
+    s.max_anisotropy = 1;
+    EXPECT_EQ(t.select_lod(footprint(32.0f, 4.0f), s).probes, 1);
+    EXPECT_EQ(t.select_lod(footprint(32.0f, 4.0f), s).level0, 5);  // GL's rho: the long axis
+    s.max_anisotropy = 16;
+    for (float bad : {NAN, INFINITY})  // no crash, a count in range
+        EXPECT_LE(t.select_lod(UvDerivatives{bad, bad, bad, bad}, s).probes, 16);
+}
+
+// What the probes buy, as properties: a round footprint (or a limit of 1) reads exactly what
+// trilinear reads; a flat color stays flat; and where the texture does not change along the
+// footprint's long axis, the result is the sharp lookup at P_max / N (trilinear blurs to P_max).
+TEST(Texture, AnisotropicFilteringProperties) {
+    Sampler tri = Sampler::plain(Filter::Bilinear, Wrap::Repeat);
+    tri.mip = MipFilter::Linear;
+    Sampler aniso = tri;
+    aniso.max_anisotropy = 16;
+    const Texture t = pattern_texture(64, 64);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> coord(-2.0f, 2.0f), scale(0.5f, 40.0f);
+    for (int trial = 0; trial < 200; ++trial) {  // round footprints (both axes the same length): the same bits
+        const glm::vec2 uv(coord(rng), coord(rng));
+        const float r = scale(rng) / 64.0f;
+        const UvDerivatives round = trial % 2 ? UvDerivatives{r, 0.0f, 0.0f, r} : UvDerivatives{0.0f, -r, r, 0.0f};
+        ASSERT_EQ(t.select_lod(round, aniso).probes, 1);
+        EXPECT_EQ(t.sample(uv, round, aniso), t.sample(uv, round, tri));
+        Sampler off = aniso;
+        off.max_anisotropy = 1;
+        const UvDerivatives stretched{r * 5.0f, 0.0f, 0.0f, r};
+        EXPECT_EQ(t.sample(uv, stretched, off), t.sample(uv, stretched, tri));
+    }
+    Image gray(16, 16);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) gray.at(x, y) = {77, 77, 77, 255};
+    const Texture flat(gray);
+    for (int trial = 0; trial < 100; ++trial) {
+        const UvDerivatives d{scale(rng) / 16.0f, 0.1f / 16.0f, 0.0f, scale(rng) / 160.0f};
+        const glm::vec4 c = flat.sample(glm::vec2(coord(rng), coord(rng)), d, aniso);
+        EXPECT_NEAR(c.r, 77.0f / 255.0f, 1e-6f);
+        EXPECT_NEAR(c.a, 1.0f, 1e-6f);
+    }
+    // Stripes across v, constant along u; the footprint 32 texels along u, 4 along v.
+    Image stripes(256, 256);
+    for (int y = 0; y < 256; ++y)
+        for (int x = 0; x < 256; ++x) stripes.at(x, y) = y % 16 < 8 ? Rgba8{255, 255, 255, 255} : Rgba8{0, 0, 0, 255};
+    const Texture st(stripes);
+    const UvDerivatives long_u{32.0f / 256.0f, 0.0f, 0.0f, 4.0f / 256.0f}, sharp{4.0f / 256.0f, 0.0f, 0.0f, 4.0f / 256.0f};
+    float aniso_contrast = 0.0f, tri_contrast = 0.0f;
+    for (int k = 0; k < 64; ++k) {
+        const glm::vec2 uv(0.37f, (float(k) + 0.3f) / 64.0f);
+        const float got = st.sample(uv, long_u, aniso).r;
+        EXPECT_NEAR(got, st.sample(uv, sharp, tri).r, 1e-6f) << k;
+        aniso_contrast = std::max(aniso_contrast, std::abs(got - 0.5f));
+        tri_contrast = std::max(tri_contrast, std::abs(st.sample(uv, long_u, tri).r - 0.5f));
+    }
+    EXPECT_GT(aniso_contrast, 0.3f);  // the stripes survive
+    EXPECT_LT(tri_contrast, 0.05f);   // trilinear's level 5 has averaged them to gray
+}
+
 // sample8 (eight lanes, gathers, a level per lane) gives the bits of sample() lane by lane,
 // on both code paths: every filter, mip mode and wrap pair, sizes that are not multiples of
 // the 4x4 storage tiles, derivatives from far magnified to far minified, and coordinates
@@ -222,8 +309,9 @@ TEST(Texture, EightLookupsAtOnceEqualOneAtATime) {
                 for (Filter min : {Filter::Nearest, Filter::Bilinear})
                     for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear})
                         for (Wrap ws : {Wrap::Repeat, Wrap::Clamp, Wrap::Mirror, Wrap::Border})
-                            for (Wrap wt : {Wrap::Repeat, Wrap::Mirror, Wrap::Border}) {
-                                const Sampler s{mag, min, mip, ws, wt, glm::vec4(0.1f, 0.3f, 0.5f, 0.7f)};
+                            for (Wrap wt : {Wrap::Repeat, Wrap::Mirror, Wrap::Border})
+                              for (int aniso : {1, 5, 16}) {
+                                const Sampler s{mag, min, mip, ws, wt, glm::vec4(0.1f, 0.3f, 0.5f, 0.7f), aniso};
                                 for (int trial = 0; trial < 12; ++trial) {
                                     simd::f8 u, v;
                                     std::array<simd::f8, 4> d;
@@ -240,7 +328,7 @@ TEST(Texture, EightLookupsAtOnceEqualOneAtATime) {
                                         for (int k = 0; k < 4; ++k)
                                             ASSERT_EQ(std::bit_cast<uint32_t>(got[size_t(k)][l]), std::bit_cast<uint32_t>(want[k]))
                                                 << w << "x" << h << " generic " << generic << " mag " << int(mag) << " min " << int(min) << " mip "
-                                                << int(mip) << " wrap " << int(ws) << "," << int(wt) << " lane " << l << " uv " << u[l] << "," << v[l];
+                                                << int(mip) << " wrap " << int(ws) << "," << int(wt) << " aniso " << aniso << " lane " << l << " uv " << u[l] << "," << v[l];
                                     }
                                 }
                             }

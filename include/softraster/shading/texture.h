@@ -11,6 +11,10 @@
 //
 // Which level: from the screen-space derivatives of (u, v) over the pixel's 2x2 quad (GL's
 // level of detail, computed as Mesa llvmpipe computes it; select_lod in texture.cpp).
+//
+// Anisotropic filtering (GL_TEXTURE_MAX_ANISOTROPY, EXT_texture_filter_anisotropic): where
+// the footprint is N times longer than wide (N up to the sampler's limit), N lookups along
+// its long axis, each at the level of detail of a footprint N times shorter, averaged.
 #pragma once
 #include <array>
 #include <cmath>
@@ -36,11 +40,12 @@ struct Sampler {
     MipFilter mip = MipFilter::None;
     Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
     glm::vec4 border{0.0f};  // GL_TEXTURE_BORDER_COLOR
+    int max_anisotropy = 1;  // GL_TEXTURE_MAX_ANISOTROPY: 1 (off) to 16 probes
 
     // One filter, no mipmaps, one wrap mode (scene format version 1's choices).
     static Sampler plain(Filter f, Wrap w) { return {f, f, MipFilter::None, w, w, glm::vec4(0.0f)}; }
     // Whether the level of detail changes anything: otherwise level 0 with the one filter.
-    bool uses_lod() const { return mip != MipFilter::None || min != mag; }
+    bool uses_lod() const { return mip != MipFilter::None || min != mag || max_anisotropy > 1; }
 };
 
 // d(u, v)/dx and d(u, v)/dy at a pixel: the differences across its 2x2 quad (GL's coarse
@@ -54,6 +59,11 @@ struct LevelChoice {
     bool minified = false;  // the min filter applies (otherwise the mag filter, on level 0)
     int level0 = 0, level1 = 0;
     float weight = 0.0f;    // of level1 (trilinear)
+    // Anisotropic filtering: the number of lookups and the footprint's long axis in (u, v)
+    // (the derivative along x or y, whichever is longer); the lookups sit at
+    // uv + ((2k + 1) / (2 probes) - 1/2) axis, k = 0 .. probes - 1.
+    int probes = 1;
+    float axis_u = 0.0f, axis_v = 0.0f;
 };
 
 class Texture {
