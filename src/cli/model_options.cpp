@@ -87,6 +87,10 @@ void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size) {
         ->capture_default_str();
     cmd.add_flag("--shadows", opt.shadows,
                  "Shadow maps for the key light, or the file's directional and spot lights (at most 4)");
+    cmd.add_flag("--ssao", opt.ambient_occlusion, "Screen-space ambient occlusion: creases and contacts darken (radius a tenth of the model's)");
+    cmd.add_option("--anisotropy", opt.anisotropy, "Anisotropic filtering: up to this many texture lookups along a stretched footprint (1 to 16)")
+        ->check(CLI::Range(1, 16))
+        ->capture_default_str();
     cmd.add_option("--env", opt.env, "An equirectangular .hdr or .exr picture that lights pbr materials (image-based lighting)");
     cmd.add_option("--env-intensity", opt.env_intensity, "The environment's light multiplied by this")
         ->check(CLI::Range(0.0, 1e6))
@@ -108,12 +112,14 @@ ModelPicture ModelOptions::picture(int default_size) const {
     if (!shading.empty()) p.shading = kShadings.at(shading);
     p.camera = camera;
     p.shadows = shadows;
+    p.anisotropy = anisotropy;
+    p.ambient_occlusion = ambient_occlusion;
     if (!env.empty()) p.environment = std::make_shared<const EnvironmentLighting>(prepare_environment(read_environment(env), env_intensity, env_background));
     return p;
 }
 
 bool ModelOptions::any_given(const CLI::App& cmd) const {
-    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure", "--shadows", "--env", "--env-intensity", "--env-background"})
+    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure", "--shadows", "--anisotropy", "--ssao", "--env", "--env-intensity", "--env-background"})
         if (cmd.count(name) > 0) return true;
     return false;
 }

@@ -15,6 +15,8 @@ struct ModelOptions {
     int samples = 4, camera = -1;
     float exposure = 1.0f;
     bool shadows = false;
+    int anisotropy = 1;
+    bool ambient_occlusion = false;
     std::string env;
     float env_intensity = 1.0f;
     bool env_background = false;

@@ -47,12 +47,19 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
     scene.tone_mapping = picture.tone_mapping;
     scene.environment = picture.environment;
     scene.objects = model.objects;
-    if (picture.shading)
-        for (SceneObject& o : scene.objects) o.material.shading = *picture.shading;
+    for (SceneObject& o : scene.objects) {
+        if (picture.shading) o.material.shading = *picture.shading;
+        o.material.sampler.max_anisotropy = picture.anisotropy;
+    }
 
     const BoundingSphere sphere = bounding_sphere(model.objects).value_or(BoundingSphere{});
     const float radius = sphere.radius > 0.0f ? sphere.radius : 1.0f;
     const ViewDirection dir = direction(picture.view);
+    if (picture.ambient_occlusion) {
+        AmbientOcclusionSettings ao;
+        ao.radius = 0.1f * radius;
+        scene.ambient_occlusion = ao;
+    }
     Camera& cam = scene.camera;
     if (picture.camera >= 0) {
         if (size_t(picture.camera) >= model.cameras.size())

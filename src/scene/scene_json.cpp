@@ -62,6 +62,16 @@ StencilOp stencil_op(const Node& n) {
 
 // glBlendEquationSeparate + glBlendFuncSeparate + glBlendColor as an object; the alpha
 // settings default to the color ones.
+// Screen-space ambient occlusion (docs/scene-format.md "Ambient occlusion").
+AmbientOcclusionSettings read_ambient_occlusion(const Node& n) {
+    n.expect_object({"radius", "intensity", "bias"});
+    AmbientOcclusionSettings s;
+    if (n.has("radius")) s.radius = float(n["radius"].number_in(0, 1e30, true, false, "0 < radius <= 1e30"));
+    if (n.has("intensity")) s.intensity = float(n["intensity"].number_in(0, 1e6, false, false, "0 to 1e6"));
+    if (n.has("bias")) s.bias = float(n["bias"].number_in(0, 1, false, true, "0 <= bias < 1"));
+    return s;
+}
+
 BlendEquationState read_blend_equation(const Node& n) {
     n.expect_object({"equation", "equation_alpha", "src", "dst", "src_alpha", "dst_alpha", "constant"});
     BlendEquationState b;
@@ -323,6 +333,7 @@ struct Loader {
                 s.wrap_s = s.wrap_t = one(w);
             }
         }
+        if (n.has("anisotropy")) s.max_anisotropy = n["anisotropy"].integer_in(1, 16);
         if (n.has("border_color")) {
             s.border = n["border_color"].vec4();
             for (int c = 0; c < 4; ++c)
@@ -334,7 +345,7 @@ struct Loader {
         n.expect_object({"shading", "color", "texture", "filter", "wrap", "specular", "shininess", "blend"},
                         {"color_mask", "alpha_cutoff", "alpha_to_coverage", "interpolation", "min_filter", "mag_filter",
                          "border_color", "metallic", "roughness", "emissive", "occlusion_strength", "metallic_roughness_texture",
-                         "occlusion_texture", "emissive_texture", "normal_texture", "normal_scale"},
+                         "occlusion_texture", "emissive_texture", "normal_texture", "normal_scale", "anisotropy"},
                         version);
         if (n.has("shading"))
             m.shading = n["shading"].choice<Shading>({{"unlit", Shading::Unlit}, {"flat", Shading::Flat},
@@ -516,8 +527,9 @@ Scene load_scene(const std::filesystem::path& path) {
     const Node top(root, "", file);
     if (!root.is_object()) top.fail("expected an object");
     loader.version = top["version"].integer_in(1, 2);
-    top.expect_object({"version", "image", "camera", "lights", "objects"}, {"draw_order", "environment"}, loader.version);
+    top.expect_object({"version", "image", "camera", "lights", "objects"}, {"draw_order", "environment", "ambient_occlusion"}, loader.version);
     if (top.has("environment")) scene.environment = loader.read_environment(top["environment"]);
+    if (top.has("ambient_occlusion")) scene.ambient_occlusion = read_ambient_occlusion(top["ambient_occlusion"]);
     if (top.has("draw_order")) scene.sorted = top["draw_order"].choice<bool>({{"sorted", true}, {"file", false}});
     loader.read_image(top["image"], scene);
     loader.read_camera(top["camera"], scene.camera);

@@ -162,43 +162,65 @@ void draw_object(Context& ctx, const SceneRenderer::Draw& d) {
     }
 }
 
-}  // namespace
-
-// A light's shadow map: the depth of the nearest caster per texel, seen through S
-// (shadow_matrix), filled by a depth pass of the scene's opaque triangles before each frame.
-struct SceneRenderer::ShadowPass {
+// A depth-only pass over every opaque triangle object (shadow maps, ambient occlusion): the
+// objects' matrices `view_projection` * model, only depth written, each object's state
+// from `state_of`.
+struct DepthPass {
     Framebuffer fb;
-    ShadowMap map;
-    std::vector<Draw> casters;
+    std::vector<SceneRenderer::Draw> draws;
     std::unique_ptr<Context> ctx;  // the recorded pass
 
-    ShadowPass(const Scene& scene, const ShadowSettings& s, const glm::mat4& matrix, const glm::vec3& travel)
-        : fb(s.size, s.size) {
-        map.depth = fb.depth_data();
-        map.size = s.size;
-        map.matrix = matrix;
-        map.offset = glm::vec3(-double(s.bias) * glm::normalize(glm::dvec3(travel)));
-        map.pcf = s.pcf;
-        // Both faces cast; only depth is written, pushed back by the slope of the caster.
-        RenderState st;
-        st.cull = CullMode::None;
-        st.color_write = false;
-        st.polygon_offset_factor = s.slope_bias;
+    template <class StateOf>
+    DepthPass(const Scene& scene, int width, int height, const glm::dmat4& view_projection, StateOf&& state_of) : fb(width, height) {
         for (const SceneObject& o : scene.objects) {
             if (o.primitive != Topology::Triangles || o.material.blend != BlendMode::Opaque) continue;
-            Draw d{o.mesh.get(), nullptr, Topology::Triangles, nullptr, {}, st, Shading::Unlit, false};
-            d.uniforms.mvp = glm::mat4(glm::dmat4(matrix) * glm::dmat4(o.model));
-            casters.push_back(std::move(d));
+            RenderState st = state_of(o);
+            st.color_write = false;
+            SceneRenderer::Draw d{o.mesh.get(), nullptr, Topology::Triangles, nullptr, {}, st, Shading::Unlit, false};
+            d.uniforms.mvp = glm::mat4(view_projection * glm::dmat4(o.model));
+            draws.push_back(std::move(d));
         }
     }
     void render(WorkerPool* pool) {
         if (!ctx) {
             ctx = std::make_unique<Context>(fb, pool);
             ctx->clear(glm::vec4(0.0f), 1.0f, 0);
-            for (const Draw& d : casters) draw_object(*ctx, d);
+            for (const SceneRenderer::Draw& d : draws) draw_object(*ctx, d);
         }
         ctx->execute();
     }
+};
+
+}  // namespace
+
+// A light's shadow map: the depth of the nearest caster per texel, seen through S
+// (shadow_matrix), filled by a depth pass of the scene's opaque triangles before each frame.
+struct SceneRenderer::ShadowPass {
+    DepthPass pass;
+    ShadowMap map;
+
+    // Both faces cast, pushed back by the slope of the caster.
+    ShadowPass(const Scene& scene, const ShadowSettings& s, const glm::mat4& matrix, const glm::vec3& travel)
+        : pass(scene, s.size, s.size, glm::dmat4(matrix), [&](const SceneObject&) {
+              RenderState st;
+              st.cull = CullMode::None;
+              st.polygon_offset_factor = s.slope_bias;
+              return st;
+          }) {
+        map.depth = pass.fb.depth_data();
+        map.size = s.size;
+        map.matrix = matrix;
+        map.offset = glm::vec3(-double(s.bias) * glm::normalize(glm::dvec3(travel)));
+        map.pcf = s.pcf;
+    }
+};
+
+// Ambient occlusion's depth: the camera's view of the opaque objects, one sample per pixel
+// of the picture as drawn (supersampled), each object culled as it is in the picture.
+struct SceneRenderer::OcclusionPass {
+    DepthPass pass;
+    glm::mat4 projection;
+    AmbientOcclusionSettings settings;
 };
 
 // The environment behind the scene: one triangle, no depth, before every object.
@@ -237,6 +259,18 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     for (size_t i = 0; i < scene.lights.punctual.size(); ++i)
         if (const PunctualLight& l = scene.lights.punctual[i]; l.shadow && l.spot)
             positional_lights_[i].shadow = add_shadow(*l.shadow, shadow_matrix(l, bounds), l.direction);
+    if (scene.ambient_occlusion) {
+        const int k = scene.supersample;
+        occlusion_ = std::make_unique<OcclusionPass>(OcclusionPass{
+            DepthPass(scene, scene.width * k, scene.height * k, glm::dmat4(proj) * glm::dmat4(view),
+                      [](const SceneObject& o) {
+                          RenderState st;
+                          st.cull = o.cull;
+                          st.front_face = o.front_face;
+                          return st;
+                      }),
+            proj, *scene.ambient_occlusion});
+    }
 
     struct Keyed {
         Draw draw;
@@ -324,7 +358,8 @@ size_t SceneRenderer::triangle_count() const {
 }
 
 RenderStats SceneRenderer::render(Framebuffer& fb) const {
-    for (const auto& pass : shadow_passes_) pass->render(pool_.get());
+    for (const auto& shadow : shadow_passes_) shadow->pass.render(pool_.get());
+    if (occlusion_) occlusion_->pass.render(pool_.get());
     if (!ctx_) {
         ctx_ = std::make_unique<Context>(fb, pool_.get());
         ctx_->clear(scene_.background, 1.0f, scene_.clear_stencil);
@@ -341,7 +376,14 @@ Framebuffer SceneRenderer::make_framebuffer() const {
 }
 
 Image SceneRenderer::resolve(const Framebuffer& fb) const {
-    return downsample_box(fb.read_pixels(), scene_.supersample, scene_.color_space);
+    Image picture = fb.read_pixels();
+    if (occlusion_) {
+        const Framebuffer& depth = occlusion_->pass.fb;
+        apply_ambient_occlusion(
+            picture, ambient_occlusion(depth.depth_data(), depth.width(), depth.height(), occlusion_->projection, occlusion_->settings, pool_.get()),
+            scene_.color_space);
+    }
+    return downsample_box(picture, scene_.supersample, scene_.color_space);
 }
 
 Image SceneRenderer::render() const {

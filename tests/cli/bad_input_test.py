@@ -116,6 +116,18 @@ expect_bad('version 3', write('v3.json', json.dumps(dict(BASE, version=3))), ['v
 expect_bad('samples 6', v2('v2s6.json', samples=6), ['image.samples', 'must be 1, 2, 4, 8 or 16'])
 expect_bad('supersample 5', v2('v2ss5.json', supersample=5), ['image.supersample', 'out of range'])
 expect_bad('supersample too big', v2('v2ssbig.json', width=9000, supersample=2), ['image.supersample', 'exceed'])
+def with_ao(name, ao, version=2):
+    s = json.loads(json.dumps(BASE))
+    s['version'] = version
+    s['ambient_occlusion'] = ao
+    return write(name, json.dumps(s))
+
+
+expect_bad('ao radius 0', with_ao('ao0.json', {"radius": 0}), ['ambient_occlusion.radius', 'out of range'])
+expect_bad('ao bias 1', with_ao('aob.json', {"bias": 1}), ['ambient_occlusion.bias', 'out of range'])
+expect_bad('ao unknown key', with_ao('aok.json', {"samples": 32}), ['ambient_occlusion', 'samples'])
+expect_bad('ao not an object', with_ao('aot.json', True), ['ambient_occlusion', 'object'])
+expect_bad('ao in v1', with_ao('aov1.json', {"radius": 1}, version=1), ['ambient_occlusion', 'version 2'])
 expect_bad('clear_stencil 256', v2('v2cs.json', clear_stencil=256), ['image.clear_stencil', 'out of range'])
 # "model" objects (version 2)
 def model_obj(name, obj, version=2):
@@ -161,6 +173,9 @@ expect_bad('unknown mag_filter', v2('v2magf.json', {"material": {"mag_filter": "
 expect_bad('wrap of 3', v2('v2wrap3.json', {"material": {"wrap": ["repeat", "clamp", "mirror"]}}), ['objects[0].material.wrap', 'array of 2'])
 expect_bad('unknown wrap per axis', v2('v2wrapa.json', {"material": {"wrap": ["repeat", "mirrored"]}}), ['objects[0].material.wrap[1]', 'unknown value'])
 expect_bad('border_color out of range', v2('v2border.json', {"material": {"border_color": [0, 0, 1.5, 1]}}), ['objects[0].material.border_color', '0..1'])
+expect_bad('anisotropy 17', v2('v2an17.json', {"material": {"anisotropy": 17}}), ['objects[0].material.anisotropy', 'out of range'])
+expect_bad('anisotropy 2.5', v2('v2an25.json', {"material": {"anisotropy": 2.5}}), ['objects[0].material.anisotropy', 'integer'])
+expect_bad('anisotropy in v1', v1_with('v1an.json', {"material": {"anisotropy": 4}}), ['objects[0].material.anisotropy', 'version 2'])
 expect_bad('trilinear in v1', v1_with('v1tri.json', {"material": {"filter": "trilinear"}}), ['objects[0].material.filter', 'version 2'])
 expect_bad('mirror in v1', v1_with('v1mirror.json', {"material": {"wrap": "mirror"}}), ['objects[0].material.wrap', 'version 2'])
 expect_bad('min_filter in v1', v1_with('v1minf.json', {"material": {"min_filter": "linear"}}), ['objects[0].material.min_filter', 'version 2'])

@@ -95,17 +95,36 @@ r = run(['render', BOX, '-o', os.path.join(work, 'box_aces.png'), '--size', '64'
 check('render --tone-mapping aces', r.returncode == 0 and png_pixels(os.path.join(work, 'box_aces.png'))[2][32] !=
       png_pixels(os.path.join(work, 'box_srgb.png'))[2][32], r.stderr)
 
-# --shadows: the key light's shadow map darkens the floor beside the cube, and brightens nothing.
+# --shadows and --ssao each darken the floor beside the cube, and brighten nothing.
 CUBE_ON_FLOOR = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scenes', 'models', 'normal_mapped.gltf')
-rows_of = {}
-for flag in ([], ['--shadows']):
-    target = os.path.join(work, 'floor%s.png' % ''.join(flag))
-    r = run(['render', CUBE_ON_FLOOR, '-o', target, '--size', '96'] + flag)
-    check('render %s' % flag, r.returncode == 0, r.stderr)
-    rows_of[bool(flag)] = png_pixels(target)[2]
-darker = sum(a < b for ra, rb in zip(rows_of[True], rows_of[False]) for a, b in zip(ra, rb))
-brighter = sum(a > b for ra, rb in zip(rows_of[True], rows_of[False]) for a, b in zip(ra, rb))
-check('--shadows darkens', darker > 100 and brighter == 0, (darker, brighter))
+
+
+def darkens(flag, at_least):
+    rows_of = {}
+    for args in ([], [flag]):
+        target = os.path.join(work, 'floor%s.png' % ''.join(args))
+        r = run(['render', CUBE_ON_FLOOR, '-o', target, '--size', '96'] + args)
+        check('render %s' % args, r.returncode == 0, r.stderr)
+        rows_of[bool(args)] = png_pixels(target)[2]
+    darker = sum(a < b for ra, rb in zip(rows_of[True], rows_of[False]) for a, b in zip(ra, rb))
+    brighter = sum(a > b for ra, rb in zip(rows_of[True], rows_of[False]) for a, b in zip(ra, rb))
+    check('%s darkens' % flag, darker > at_least and brighter == 0, (darker, brighter))
+
+
+darkens('--shadows', 100)
+darkens('--ssao', 50)
+
+# --anisotropy: more lookups where the duck's texture is minified and stretched; 17 is refused.
+pics = {}
+for n in ('1', '16'):
+    target = os.path.join(work, 'duck_aniso%s.png' % n)
+    r = run(['render', DUCK, '-o', target, '--size', '48', '--samples', '1', '--anisotropy', n])
+    check('render --anisotropy %s' % n, r.returncode == 0, r.stderr)
+    pics[n] = png_pixels(target)[2]
+changed = sum(a != b for ra, rb in zip(pics['1'], pics['16']) for a, b in zip(ra, rb))
+check('--anisotropy changes minified texels', changed > 20, changed)
+r = run(['render', DUCK, '-o', os.path.join(work, 'a17.png'), '--anisotropy', '17'])
+check('render --anisotropy 17', r.returncode == 2 and '--anisotropy' in r.stderr and not os.path.exists(os.path.join(work, 'a17.png')), r.stderr)
 
 # --env: a uniform environment lights a pbr model's materials; a cut file is one line, exit 2.
 hdr = b'#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n' + b'\x80\x80\x80\x81' * 8

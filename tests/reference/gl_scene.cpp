@@ -1,4 +1,5 @@
 #include "gl_scene.h"
+#include "gl_state.h"
 #include "gl_shaders.h"
 
 #include <algorithm>
@@ -162,7 +163,8 @@ GlScene::GlScene(const softraster::Scene& scene)
       shadows_(std::make_unique<GlShadows>(scene)),
       environment_(std::make_unique<GlEnvironment>(scene.environment.get(), softraster::view_matrix(scene.camera),
                                                    softraster::projection_matrix(scene.camera, scene.width, scene.height),
-                                                   scene.tone_mapping)) {
+                                                   scene.tone_mapping)),
+      occlusion_(std::make_unique<GlAmbientOcclusion>(scene, scene.width * scene.supersample, scene.height * scene.supersample)) {
 
     const glm::mat4 view = softraster::view_matrix(scene.camera);
     const glm::mat4 proj = softraster::projection_matrix(scene.camera, scene.width, scene.height);
@@ -281,7 +283,10 @@ GlScene::GlScene(const softraster::Scene& scene)
         return a->blended && a->view_depth < b->view_depth;
     });
     for (const auto& d : draws_)
-        if (d->mode == GL_TRIANGLES && !d->blended && !d->wire) casters_.push_back({d->vao, d->index_count, d->model});
+        if (d->mode == GL_TRIANGLES && !d->blended && !d->wire) {
+            casters_.push_back({d->vao, d->index_count, d->model});
+            occluders_.push_back({d->vao, d->index_count, d->model, d->object->cull, d->object->front_face});
+        }
     if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL error while uploading the scene");
 }
 
@@ -290,8 +295,13 @@ GlScene::~GlScene() {
     for (const auto& [key, program] : programs_) glDeleteProgram(program);
 }
 
+void GlScene::apply_ambient_occlusion(softraster::Image& picture) const {
+    if (occlusion_->active()) softraster::apply_ambient_occlusion(picture, occlusion_->factors(), scene_.color_space);
+}
+
 void GlScene::draw_frame() const {
     shadows_->draw(casters_);
+    occlusion_->draw_depth(occluders_);
     const glm::vec4 bg = scene_.background;
     glClearColor(bg.r, bg.g, bg.b, bg.a);
     glClearDepth(1.0);
@@ -372,16 +382,13 @@ void GlScene::draw_frame() const {
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap(s.wrap_s));
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap(s.wrap_t));
             glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(s.border));
+            // llvmpipe's anisotropic filter is an elliptical (EWA) one, ours takes probes along
+            // the long axis as the extension describes: the same state, not the same pixels
+            // (docs/scene-format.md "Texture sampling").
+            if (s.max_anisotropy > 1) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, float(s.max_anisotropy));
         }
         glActiveTexture(GL_TEXTURE0);
-        // The y flip in the vertex shader mirrors windings: front faces flip too.
-        if (o.cull == softraster::CullMode::None) {
-            glDisable(GL_CULL_FACE);
-        } else {
-            glEnable(GL_CULL_FACE);
-            glCullFace(o.cull == softraster::CullMode::Back ? GL_BACK : GL_FRONT);
-        }
-        glFrontFace(o.front_face == softraster::FrontFace::CCW ? GL_CW : GL_CCW);
+        set_faces(o.cull, o.front_face);
         glUniform1f(loc("u_alpha_cutoff"), m.alpha_cutoff.value_or(0.0f));
         glUniform1f(loc("u_exposure"), scene_.tone_mapping.exposure);
         const softraster::ObjectState& st = o.state;

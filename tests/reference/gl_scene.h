@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "gl_ambient_occlusion.h"
 #include "gl_environment.h"
 #include "gl_shadows.h"
 #include "osmesa_target.h"
@@ -22,6 +23,9 @@ public:
 
     // Clear and every draw, in the spec's order; the caller resolves and reads back.
     void draw_frame() const;
+    // Ambient occlusion (if the scene has it) on the picture read back, before the
+    // supersampling filter.
+    void apply_ambient_occlusion(softraster::Image& picture) const;
 
     struct Draw;
 
@@ -32,6 +36,8 @@ private:
     std::unique_ptr<GlShadows> shadows_;
     std::unique_ptr<GlEnvironment> environment_;
     std::vector<GlShadows::Caster> casters_;  // the opaque triangle draws
+    std::unique_ptr<GlAmbientOcclusion> occlusion_;
+    std::vector<GlAmbientOcclusion::Occluder> occluders_;  // the same draws, with their faces
 };
 
 }  // namespace glref

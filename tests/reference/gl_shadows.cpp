@@ -1,5 +1,6 @@
 #include "gl_shadows.h"
 #include "gl_shaders.h"
+#include "gl_state.h"
 
 #include <stdexcept>
 #include <string>
@@ -56,9 +57,6 @@ std::string GlShadows::defines() const { return "#define SHADOWS " + std::to_str
 
 void GlShadows::draw(const std::vector<Caster>& casters) const {
     if (maps_.empty()) return;
-    GLint previous = 0, viewport[4];
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
-    glGetIntegerv(GL_VIEWPORT, viewport);
     glUseProgram(program_);
     glDisable(GL_CULL_FACE);  // both faces cast
     glDisable(GL_BLEND);
@@ -69,8 +67,7 @@ void GlShadows::draw(const std::vector<Caster>& casters) const {
     glDepthMask(GL_TRUE);
     glEnable(GL_POLYGON_OFFSET_FILL);
     for (const Map& m : maps_) {
-        glBindFramebuffer(GL_FRAMEBUFFER, m.fbo);
-        glViewport(0, 0, m.settings.size, m.settings.size);
+        const PassTarget target(m.fbo, m.settings.size, m.settings.size);
         glClearDepth(1.0);
         glClear(GL_DEPTH_BUFFER_BIT);
         glPolygonOffset(m.settings.slope_bias, 0.0f);
@@ -82,8 +79,6 @@ void GlShadows::draw(const std::vector<Caster>& casters) const {
         }
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
 }
 
 void GlShadows::bind(GLuint program) const {

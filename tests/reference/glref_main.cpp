@@ -89,7 +89,9 @@ int main(int argc, char** argv) {
             gl_scene.draw_frame();
             target.resolve();
             glFinish();
-            softraster::write_png(box_filter(target.read_pixels(), k, srgb), out);
+            softraster::Image picture = target.read_pixels();
+            gl_scene.apply_ambient_occlusion(picture);
+            softraster::write_png(box_filter(picture, k, srgb), out);
             return 0;
         }
         std::vector<double> ms;
@@ -98,6 +100,10 @@ int main(int argc, char** argv) {
             target.bind_for_drawing();
             gl_scene.draw_frame();
             target.resolve();
+            if (scene.ambient_occlusion) {
+                softraster::Image picture = target.read_pixels();
+                gl_scene.apply_ambient_occlusion(picture);
+            }
             glFinish();
             const double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             if (i >= warmup) ms.push_back(dt);

@@ -62,9 +62,28 @@ TEST(SceneJson, Defaults) {
     EXPECT_EQ(o.material.sampler.mip, MipFilter::None);
     EXPECT_EQ(o.material.sampler.wrap_s, Wrap::Repeat);
     EXPECT_EQ(o.material.sampler.wrap_t, Wrap::Repeat);
+    EXPECT_EQ(o.material.sampler.max_anisotropy, 1);
     EXPECT_FLOAT_EQ(o.material.shininess, 32);
     EXPECT_EQ(o.material.blend, BlendMode::Opaque);
     EXPECT_EQ(o.mesh->triangle_count(), 12u);
+}
+
+TEST(SceneJson, Anisotropy) {
+    std::string v2 = with("\"version\": 1", "\"version\": 2");
+    const size_t at = v2.find("\"builtin\"");
+    v2.insert(at, "\"material\": {\"filter\": \"trilinear\", \"anisotropy\": 8}, ");
+    EXPECT_EQ(load_scene(write_scene("aniso.json", v2)).objects[0].material.sampler.max_anisotropy, 8);
+}
+
+TEST(SceneJson, AmbientOcclusion) {
+    std::string v2 = with("\"version\": 1", "\"version\": 2");
+    EXPECT_FALSE(load_scene(write_scene("no_ao.json", v2)).ambient_occlusion);
+    v2.insert(v2.rfind('}'), ", \"ambient_occlusion\": {\"radius\": 0.25, \"bias\": 0}");
+    const Scene s = load_scene(write_scene("ao.json", v2));
+    ASSERT_TRUE(s.ambient_occlusion);
+    EXPECT_EQ(s.ambient_occlusion->radius, 0.25f);
+    EXPECT_EQ(s.ambient_occlusion->intensity, 2.0f);
+    EXPECT_EQ(s.ambient_occlusion->bias, 0.0f);
 }
 
 TEST(SceneJson, ErrorsNameThePathAndTheProblem) {

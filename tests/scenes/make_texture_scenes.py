@@ -4,7 +4,7 @@ textures and meshes): a checkerboard floor running to the horizon under every mi
 (nearest and linear, without mipmaps, with the nearest mipmap and between two), the
 magnification filter apart, the four wrap modes (and one per axis) on a floor whose texture
 coordinates repeat, a texture whose sides are not powers of two, trilinear filtering with
-4x MSAA and on lit, textured boxes. ctest renders each with softraster and with Mesa
+4x MSAA and on lit, textured boxes (and, apart in anisotropic/, anisotropic filtering). ctest renders each with softraster and with Mesa
 llvmpipe (tests/reference) and compares. Run it again after editing; the files it writes
 are committed."""
 import json, os
@@ -78,6 +78,14 @@ def main():
         boxes.append({"builtin": {"type": "cube", "size": 1}, "material": m,
                       "transform": {"translate": [x, 0, -0.4 * i], "rotate": [15, 30 + 20 * i, 0], "scale": scale}})
     scene("boxes_lit_trilinear", boxes, camera=BOX_CAM)
+
+    # Anisotropic filtering: llvmpipe's filter is another one (elliptical, EWA), so these are
+    # not conformance scenes; docs/materials.md shows them beside llvmpipe's with the
+    # measured difference (scripts/side-by-side.py), and texture_test.cpp checks ours.
+    for n in (4, 16):
+        s = {"version": 2, "image": {"width": 240, "height": 90, "background": [0.55, 0.7, 0.9, 1]}, "camera": FLOOR_CAM,
+             "lights": LIGHTS, "objects": [floor(dict(checker(filter="trilinear", anisotropy=n), texture="../textures/checker128.png"))]}
+        write('anisotropic/aniso_floor_%dx.json' % n, json.dumps(s, indent=1))
 
 
 if __name__ == '__main__':

@@ -57,6 +57,8 @@ struct ModelPicture {
     ColorSpace color_space = ColorSpace::Srgb;  // glTF's: color textures and the picture sRGB-encoded
     ToneMapping tone_mapping;
     bool shadows = false;  // shadow maps for the key light or the file's lights (model_scene)
+    int anisotropy = 1;    // every texture's max_anisotropy (texture.h): 1 is off
+    bool ambient_occlusion = false;  // screen-space, the radius a tenth of the model's (model_scene)
     std::shared_ptr<const EnvironmentLighting> environment;  // image-based lighting for pbr materials
 };
 

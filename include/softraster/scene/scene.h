@@ -14,6 +14,7 @@
 #include "softraster/image.h"
 #include "softraster/render_state.h"
 #include "softraster/scene/mesh.h"
+#include "softraster/shading/ambient_occlusion.h"
 #include "softraster/shading/environment_lighting.h"
 #include "softraster/shading/texture.h"
 #include "softraster/shading/tone_mapping.h"
@@ -135,6 +136,9 @@ struct Scene {
     ToneMapping tone_mapping;
     // Version 2: image-based lighting of pbr surfaces (docs/scene-format.md "Environment lighting").
     std::shared_ptr<const EnvironmentLighting> environment;
+    // Version 2: screen-space ambient occlusion darkens the picture (docs/scene-format.md
+    // "Ambient occlusion").
+    std::optional<AmbientOcclusionSettings> ambient_occlusion;
     Camera camera;
     Lights lights;
     std::vector<SceneObject> objects;

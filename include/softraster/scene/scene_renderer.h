@@ -31,13 +31,14 @@ public:
     SceneRenderer(const SceneRenderer&) = delete;
     SceneRenderer& operator=(const SceneRenderer&) = delete;
 
-    // Draws the shadow maps, then clears fb and draws every object in the spec's draw order. The draws are recorded on
+    // Draws the shadow maps and ambient occlusion's depth, then clears fb and draws every object in the spec's draw order. The draws are recorded on
     // the first call and replayed after, so buffers are reused from frame to frame; fb must
     // have the scene's sample count. Not for use by two threads at once.
     RenderStats render(Framebuffer& fb) const;
     // A framebuffer for render(fb): the scene's size times its supersampling factor, and its samples.
     Framebuffer make_framebuffer() const;
-    // The picture of a rendered framebuffer: the MSAA resolve, then the supersampling box filter.
+    // The picture of a rendered framebuffer: the MSAA resolve, ambient occlusion, then the
+    // supersampling box filter.
     Image resolve(const Framebuffer& fb) const;
     // Allocates a framebuffer, renders and resolves.
     Image render() const;
@@ -62,10 +63,12 @@ public:
 private:
     struct ShadowPass;  // a light's shadow map and the depth pass that fills it (scene_renderer.cpp)
     struct Sky;         // the environment behind the scene (sky_shader.h)
+    struct OcclusionPass;  // the depth pass of ambient occlusion (ambient_occlusion.h)
     const Scene& scene_;
     std::vector<PositionalLight> positional_lights_;  // the draws' LightSets point here
     std::vector<std::unique_ptr<ShadowPass>> shadow_passes_;  // and here; drawn first in each frame
     std::unique_ptr<Sky> sky_;                                // drawn right after the clear
+    std::unique_ptr<OcclusionPass> occlusion_;                // drawn before the frame, applied in resolve()
     std::vector<Draw> draws_;  // in draw order
     std::unique_ptr<WorkerPool> pool_;
     mutable std::unique_ptr<Context> ctx_;  // the recorded frame
