@@ -23,7 +23,7 @@ Run add_bench_command(CLI::App& app) {
     cmd->add_option("scene", opt->scene, "Scene file (.json)")->required();
     cmd->add_option("--frames", opt->frames, "Timed frames")->check(CLI::Range(1, 100000))->capture_default_str();
     cmd->add_option("--warmup", opt->warmup, "Untimed frames first")->check(CLI::Range(0, 100000))->capture_default_str();
-    cmd->add_option("--threads", opt->threads, "Worker threads (0: one per core)")->check(CLI::Range(0, 256))->capture_default_str();
+    add_threads_option(*cmd, opt->threads);
     cmd->add_flag("--json", opt->json, "Print one JSON line instead of text");
     return [opt] {
         const Scene scene = load_scene(opt->scene);

@@ -15,8 +15,14 @@ Run add_render_command(CLI::App& app);
 Run add_showcase_command(CLI::App& app);
 Run add_bench_command(CLI::App& app);
 Run add_thumbnails_command(CLI::App& app);
+Run add_animate_command(CLI::App& app);
 
 // --threads: a count, or 0 for one thread per core.
+inline void add_threads_option(CLI::App& cmd, int& threads) {
+    cmd.add_option("--threads", threads, "Worker threads (0: one per core); the pictures are the same for any count")
+        ->check(CLI::Range(0, 256))
+        ->capture_default_str();
+}
 inline unsigned thread_count(int requested) {
     return requested > 0 ? unsigned(requested) : std::max(1u, std::thread::hardware_concurrency());
 }

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     const cli::Run showcase = cli::add_showcase_command(app);
     const cli::Run bench = cli::add_bench_command(app);
     const cli::Run thumbnails = cli::add_thumbnails_command(app);
+    const cli::Run animate = cli::add_animate_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("showcase")) return showcase();
         if (app.got_subcommand("bench")) return bench();
         if (app.got_subcommand("thumbnails")) return thumbnails();
+        if (app.got_subcommand("animate")) return animate();
     } catch (const InputError& e) {
         std::cerr << "softraster: error: " << e.what() << "\n";
         return cli::kExitBadInput;

@@ -1,5 +1,6 @@
 #include "cli/model_options.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <vector>
@@ -116,6 +117,20 @@ ModelPicture ModelOptions::picture(int default_size) const {
     p.ambient_occlusion = ambient_occlusion;
     if (!env.empty()) p.environment = std::make_shared<const EnvironmentLighting>(prepare_environment(read_environment(env), env_intensity, env_background));
     return p;
+}
+
+Scene input_scene(const std::filesystem::path& path, const ModelOptions& options, const CLI::App& cmd) {
+    if (path.extension() == ".json") {
+        if (options.any_given(cmd))
+            throw InputError(path.string() + ": --size, --view, --background, --samples, --shading and --camera are for model files; a scene file sets these itself");
+        return load_scene(path);
+    }
+    const ModelPicture picture = options.picture(512);
+    const Model model = load_model(path, MissingTexture::Warn, picture.color_space);
+    for (const std::string& w : model.warnings) std::fprintf(stderr, "softraster: warning: %s\n", w.c_str());
+    if (options.verbose)
+        for (const std::string& what : model.ignored) std::fprintf(stderr, "%s: not drawn: %s\n", path.string().c_str(), what.c_str());
+    return model_scene(model, picture);
 }
 
 bool ModelOptions::any_given(const CLI::App& cmd) const {

@@ -1,6 +1,7 @@
 // The options of the commands that picture model files (render MODEL, thumbnails): size,
 // view, background, samples, shading, the file's camera.
 #pragma once
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -30,5 +31,10 @@ struct ModelOptions {
 };
 
 void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size);
+
+// The scene of a command's input: a scene file (.json), where the model options are an
+// error, or a model file pictured with them (textures that cannot be read are drawn
+// without, with a warning line; -v says what the file has that is not drawn).
+Scene input_scene(const std::filesystem::path& path, const ModelOptions& options, const CLI::App& cmd);
 
 }  // namespace softraster::cli

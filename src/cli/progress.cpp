@@ -1,13 +1,14 @@
 #include "cli/progress.h"
 
 #include <cstdio>
+#include <utility>
 
 #include <unistd.h>
 
 namespace softraster::cli {
 
-Progress::Progress(size_t total)
-    : total_(total), terminal_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()) {}
+Progress::Progress(size_t total, std::string unit)
+    : total_(total), unit_(std::move(unit)), terminal_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()) {}
 
 Progress::~Progress() { clear(); }
 
@@ -29,7 +30,7 @@ void Progress::update(size_t done, const std::string& note, bool force) {
     } else if (done >= total_) {
         std::snprintf(eta, sizeof eta, "0:00");
     }
-    std::fprintf(stderr, "\r[%s] %zu/%zu  %.1f files/s  ETA %s%s%s\033[K", bar.c_str(), done, total_, rate, eta,
+    std::fprintf(stderr, "\r[%s] %zu/%zu  %.1f %s/s  ETA %s%s%s\033[K", bar.c_str(), done, total_, rate, unit_.c_str(), eta,
                  note.empty() ? "" : "  ", note.c_str());
     std::fflush(stderr);
     shown_ = true;

@@ -9,7 +9,8 @@ namespace softraster::cli {
 
 class Progress {
 public:
-    explicit Progress(size_t total);
+    // `unit`: what is counted, for the rate ("files" -> "12.5 files/s").
+    explicit Progress(size_t total, std::string unit = "files");
     ~Progress();
     bool on_terminal() const { return terminal_; }
     // `done` of total finished, `note` (e.g. "3 failed") after the numbers. Redraws at most
@@ -20,6 +21,7 @@ public:
 
 private:
     size_t total_;
+    std::string unit_;
     bool terminal_;
     bool shown_ = false;
     std::chrono::steady_clock::time_point start_, last_draw_;

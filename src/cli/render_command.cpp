@@ -9,6 +9,7 @@
 #include "softraster/error.h"
 #include "softraster/io/image_write.h"
 #include "softraster/pipeline/resolve.h"
+#include "softraster/scene/animation.h"
 #include "softraster/scene/model.h"
 #include "softraster/scene/scene_renderer.h"
 
@@ -25,16 +26,6 @@ void write_buffer(const GrayImage<T>& picture, const std::string& path) {
     std::fprintf(stderr, "wrote %s (%dx%d)\n", path.c_str(), picture.width, picture.height);
 }
 
-// A model file's scene: textures that cannot be read are drawn without (a warning line).
-Scene picture_model(const std::filesystem::path& path, const ModelOptions& options) {
-    const ModelPicture picture = options.picture(512);
-    const Model model = load_model(path, MissingTexture::Warn, picture.color_space);
-    for (const std::string& w : model.warnings) std::fprintf(stderr, "softraster: warning: %s\n", w.c_str());
-    if (options.verbose)
-        for (const std::string& what : model.ignored) std::fprintf(stderr, "%s: not drawn: %s\n", path.string().c_str(), what.c_str());
-    return model_scene(model, picture);
-}
-
 }  // namespace
 
 Run add_render_command(CLI::App& app) {
@@ -42,6 +33,7 @@ Run add_render_command(CLI::App& app) {
         std::string scene, out, depth_out, stencil_out;
         int threads = 0;
         ModelOptions model;
+        double turntable = 0.0, time = 0.0;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand("render", "Render a scene file or a model file to a picture (PNG, TGA, PPM or EXR)");
@@ -53,10 +45,13 @@ Run add_render_command(CLI::App& app) {
     cmd->add_option("--depth-out", opt->depth_out,
                     "Also write the depth buffer: .png (16-bit, scaled from its least to its greatest finite value) or .exr (float, as stored)");
     cmd->add_option("--stencil-out", opt->stencil_out, "Also write the stencil buffer as an 8-bit gray .png");
-    cmd->add_option("--threads", opt->threads, "Worker threads (0: one per core); the picture is the same for any count")
-        ->check(CLI::Range(0, 256))
-        ->capture_default_str();
+    add_threads_option(*cmd, opt->threads);
     add_model_options(*cmd, opt->model, 512);
+    CLI::Option* turntable = cmd->add_option("--turntable", opt->turntable, "With --time: the frame of 'animate --turntable SECONDS' at that time")
+                                 ->check(CLI::Range(1e-3, 1e6));
+    cmd->add_option("--time", opt->time, "Seconds into the turntable (the same picture as that frame of 'animate')")
+        ->check(CLI::Range(0.0, 1e9))
+        ->needs(turntable);
     cmd->footer("Examples:\n  softraster render scenes/tri_basic.json -o tri.png\n"
                 "  softraster render duck.glb -o duck.png --size 800x600 --view front\n"
                 "The model options (--size ... --camera) apply to model files only.\n"
@@ -69,10 +64,8 @@ Run add_render_command(CLI::App& app) {
         if (!opt->depth_out.empty()) check_output_path(opt->depth_out, {PictureFormat::Png, PictureFormat::Exr});
         if (!opt->stencil_out.empty()) check_output_path(opt->stencil_out, {PictureFormat::Png});
         const auto start = std::chrono::steady_clock::now();
-        const bool is_scene = scene_path.extension() == ".json";
-        if (is_scene && opt->model.any_given(*cmd))
-            throw InputError(scene_path.string() + ": --size, --view, --background, --samples, --shading and --camera are for model files; a scene file sets these itself");
-        const Scene scene = is_scene ? load_scene(scene_path) : picture_model(scene_path, opt->model);
+        Scene scene = input_scene(scene_path, opt->model, *cmd);
+        if (opt->turntable > 0.0) scene = turned_scene(scene, turntable_angle(Turntable{opt->turntable}, opt->time));
         const SceneRenderer renderer(scene, thread_count(opt->threads));
         Framebuffer fb = renderer.make_framebuffer();
         renderer.render(fb);

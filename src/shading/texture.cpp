@@ -250,122 +250,138 @@ struct LaneLevels {
 
 template <bool Wide, bool Srgb>
 void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
-    using simd::select, simd::splat, simd::splat_i, simd::to_float;
-    // Which level(s) and filter each lane takes (select_lod).
-    i8 level0 = splat_i(0), level1 = splat_i(0), nearest = splat_i(s.mag == Filter::Nearest ? -1 : 0), probes = splat_i(1);
-    f8 weight = splat(0.0f), axis_u = splat(0.0f), axis_v = splat(0.0f);
-    if (s.uses_lod()) {
-        const f8 ax = d[0] * float(width()), bx = d[1] * float(height()), ay = d[2] * float(width()), by = d[3] * float(height());
-        const f8 rx = ax * ax + bx * bx, ry = ay * ay + by * by;
-        f8 rho2 = select(rx > ry, rx, ry);
-        const i8 minified = rho2 > 1.0f;
-        nearest = select(minified, splat_i(s.min == Filter::Nearest ? -1 : 0), nearest);
-        if (s.max_anisotropy > 1) {  // probe_count and the long axis, lane by lane
-            const f8 rmin = select(rx > ry, ry, rx);
-            probes = splat_i(1);
-            for (int k = 1; k < s.max_anisotropy; ++k) probes = select(to_float(splat_i(k * k)) * rmin < rho2, probes + 1, probes);
-            probes = select(minified, probes, splat_i(1));
-            axis_u = select(rx > ry, d[0], d[2]), axis_v = select(rx > ry, d[1], d[3]);
-            rho2 = rho2 / to_float(probes * probes);
-        }
-        const i8 bits = std::bit_cast<i8>(rho2);
-        const i8 exponent = ((bits >> 23) & 255) - 127;
-        const int last = levels() - 1;
-        if (s.mip == MipFilter::Nearest) {
-            const i8 l = (exponent + 1) >> 1;
-            level0 = level1 = select(minified, select(l < 0, splat_i(0), select(l > last, splat_i(last), l)), splat_i(0));
-        } else if (s.mip == MipFilter::Linear) {
-            const i8 mbits = (bits & 0x007fffff) | 0x3f800000;
-            const f8 lod = 0.5f * (to_float(exponent) + (std::bit_cast<f8>(mbits) - 1.0f));
-            const i8 i = floor_to_int8(lod);
-            const i8 inside = minified & (i >= 0) & (i < last);
-            level0 = select(minified & (i >= last), splat_i(last), select(inside, i, splat_i(0)));
-            level1 = select(inside, i + 1, level0);
-            weight = select(inside, lod - to_float(i), splat(0.0f));
-        }
-    }
-    const bool two_levels = s.mip == MipFilter::Linear && simd::any(weight != 0.0f);
-    auto lane_levels = [&](i8 level) {
-        LaneLevels r{};
-        if (!simd::any(level != 0)) {
-            const Level& l = levels_[0];
-            return LaneLevels{splat_i(l.width), splat_i(l.height), splat_i(l.tiles_x), splat_i(l.offset)};
-        }
-        if (levels() <= 16) {  // a texture under 65536 texels a side: two table lookups per number
-            const i8 high = level >= 8, index = level & 7;
-            auto pick = [&](const std::array<int32_t, 16>& table) {
-                i8 low_half, high_half;
-                std::memcpy(&low_half, table.data(), sizeof(i8));
-                std::memcpy(&high_half, table.data() + 8, sizeof(i8));
-                return select(high, simd::permute(high_half, index), simd::permute(low_half, index));
-            };
-            return LaneLevels{pick(tables_.width), pick(tables_.height), pick(tables_.tiles_x), pick(tables_.offset)};
-        }
-        for (int k = 0; k < simd::kLanes; ++k) {
-            const Level& l = levels_[size_t(level[k])];
-            r.width[k] = l.width, r.height[k] = l.height, r.tiles_x[k] = l.tiles_x, r.offset[k] = l.offset;
-        }
-        return r;
-    };
-    // sample_level: nearest lanes take the bilinear formula at x = u with weights 0, which
-    // gives exactly the one texel (t * 1 + t' * 0 = t).
-    const f8 half = select(nearest, splat(0.0f), splat(0.5f));
-    const uint32_t* texels = this->texels();
-    const std::array<float, 256>& decode = srgb::tables().decode;
-    const bool has_border = s.wrap_s == Wrap::Border || s.wrap_t == Wrap::Border;
-    const LaneLevels levels0 = lane_levels(level0), levels1 = two_levels ? lane_levels(level1) : levels0;
-    auto at_level = [&](const LaneLevels& l, const f8& ur, const f8& vr, std::array<f8, 4>& out) {
-        const f8 x = ur * to_float(l.width) - half, y = vr * to_float(l.height) - half;
-        const i8 i0 = floor_to_int8(x), j0 = floor_to_int8(y);
-        const f8 fx = select(nearest, splat(0.0f), x - to_float(i0)), fy = select(nearest, splat(0.0f), y - to_float(j0));
-        const i8 ia = wrap_texel8(i0, l.width, s.wrap_s), ib = wrap_texel8(i0 + 1, l.width, s.wrap_s);
-        const i8 ja = wrap_texel8(j0, l.height, s.wrap_t), jb = wrap_texel8(j0 + 1, l.height, s.wrap_t);
-        std::array<f8, 4> c[4];  // the footprint's texels: (ia, ja), (ib, ja), (ia, jb), (ib, jb)
-        const i8 is[4] = {ia, ib, ia, ib}, js[4] = {ja, ja, jb, jb};
-        for (int t = 0; t < 4; ++t) {
-            const i8 border = (is[t] < 0) | (js[t] < 0);  // (never without a border wrap mode)
-            const i8 index = l.offset + ((js[t] >> 2) * l.tiles_x + (is[t] >> 2)) * 16 + (js[t] & 3) * 4 + (is[t] & 3);
-            i8 texel;
-            gather<Wide>(texels, has_border ? select(border, splat_i(0), index) : index, texel);
-            for (int k = 0; k < 4; ++k) {
-                f8 value;
-                if (Srgb && k < 3) {  // decoded texel by texel, before the filter
-                    const i8 byte = (texel >> (8 * k)) & 255;
-                    for (int lane = 0; lane < simd::kLanes; ++lane) value[lane] = decode[size_t(byte[lane])];
-                } else {
-                    value = to_float((texel >> (8 * k)) & 255) * (1.0f / 255.0f);
-                }
-                c[t][size_t(k)] = has_border ? select(border, splat(s.border[k]), value) : value;
+    // Anisotropic filtering compiles to a copy of its own (Aniso), so that it costs the
+    // other lookups nothing.
+    auto body = [&]<bool Aniso>() {
+        using simd::select, simd::splat, simd::splat_i, simd::to_float;
+        // Which level(s) and filter each lane takes (select_lod).
+        i8 level0 = splat_i(0), level1 = splat_i(0), nearest = splat_i(s.mag == Filter::Nearest ? -1 : 0), probes = splat_i(1);
+        f8 weight = splat(0.0f), axis_u = splat(0.0f), axis_v = splat(0.0f);
+        if (s.uses_lod()) {
+            const f8 ax = d[0] * float(width()), bx = d[1] * float(height()), ay = d[2] * float(width()), by = d[3] * float(height());
+            const f8 rx = ax * ax + bx * bx, ry = ay * ay + by * by;
+            f8 rho2 = select(rx > ry, rx, ry);
+            const i8 minified = rho2 > 1.0f;
+            nearest = select(minified, splat_i(s.min == Filter::Nearest ? -1 : 0), nearest);
+            if constexpr (Aniso) {  // probe_count and the long axis, lane by lane
+                const f8 rmin = select(rx > ry, ry, rx);
+                probes = splat_i(1);
+                for (int k = 1; k < s.max_anisotropy; ++k) probes = select(to_float(splat_i(k * k)) * rmin < rho2, probes + 1, probes);
+                probes = select(minified, probes, splat_i(1));
+                axis_u = select(rx > ry, d[0], d[2]), axis_v = select(rx > ry, d[1], d[3]);
+                rho2 = rho2 / to_float(probes * probes);
+            }
+            const i8 bits = std::bit_cast<i8>(rho2);
+            const i8 exponent = ((bits >> 23) & 255) - 127;
+            const int last = levels() - 1;
+            if (s.mip == MipFilter::Nearest) {
+                const i8 l = (exponent + 1) >> 1;
+                level0 = level1 = select(minified, select(l < 0, splat_i(0), select(l > last, splat_i(last), l)), splat_i(0));
+            } else if (s.mip == MipFilter::Linear) {
+                const i8 mbits = (bits & 0x007fffff) | 0x3f800000;
+                const f8 lod = 0.5f * (to_float(exponent) + (std::bit_cast<f8>(mbits) - 1.0f));
+                const i8 i = floor_to_int8(lod);
+                const i8 inside = minified & (i >= 0) & (i < last);
+                level0 = select(minified & (i >= last), splat_i(last), select(inside, i, splat_i(0)));
+                level1 = select(inside, i + 1, level0);
+                weight = select(inside, lod - to_float(i), splat(0.0f));
             }
         }
-        for (size_t k = 0; k < 4; ++k) {
-            const f8 bottom = c[0][k] * (1.0f - fx) + c[1][k] * fx, top = c[2][k] * (1.0f - fx) + c[3][k] * fx;
-            out[k] = bottom * (1.0f - fy) + top * fy;
+        const bool two_levels = s.mip == MipFilter::Linear && simd::any(weight != 0.0f);
+        auto lane_levels = [&](i8 level) {
+            LaneLevels r{};
+            if (!simd::any(level != 0)) {
+                const Level& l = levels_[0];
+                return LaneLevels{splat_i(l.width), splat_i(l.height), splat_i(l.tiles_x), splat_i(l.offset)};
+            }
+            if (levels() <= 16) {  // a texture under 65536 texels a side: two table lookups per number
+                const i8 high = level >= 8, index = level & 7;
+                auto pick = [&](const std::array<int32_t, 16>& table) {
+                    i8 low_half, high_half;
+                    std::memcpy(&low_half, table.data(), sizeof(i8));
+                    std::memcpy(&high_half, table.data() + 8, sizeof(i8));
+                    return select(high, simd::permute(high_half, index), simd::permute(low_half, index));
+                };
+                return LaneLevels{pick(tables_.width), pick(tables_.height), pick(tables_.tiles_x), pick(tables_.offset)};
+            }
+            for (int k = 0; k < simd::kLanes; ++k) {
+                const Level& l = levels_[size_t(level[k])];
+                r.width[k] = l.width, r.height[k] = l.height, r.tiles_x[k] = l.tiles_x, r.offset[k] = l.offset;
+            }
+            return r;
+        };
+        // sample_level: nearest lanes take the bilinear formula at x = u with weights 0, which
+        // gives exactly the one texel (t * 1 + t' * 0 = t).
+        const f8 half = select(nearest, splat(0.0f), splat(0.5f));
+        const uint32_t* texels = this->texels();
+        const std::array<float, 256>& decode = srgb::tables().decode;
+        const bool has_border = s.wrap_s == Wrap::Border || s.wrap_t == Wrap::Border;
+        auto at_level = [&](const LaneLevels& l, const f8& ur, const f8& vr, std::array<f8, 4>& out) {
+            const f8 x = ur * to_float(l.width) - half, y = vr * to_float(l.height) - half;
+            const i8 i0 = floor_to_int8(x), j0 = floor_to_int8(y);
+            const f8 fx = select(nearest, splat(0.0f), x - to_float(i0)), fy = select(nearest, splat(0.0f), y - to_float(j0));
+            const i8 ia = wrap_texel8(i0, l.width, s.wrap_s), ib = wrap_texel8(i0 + 1, l.width, s.wrap_s);
+            const i8 ja = wrap_texel8(j0, l.height, s.wrap_t), jb = wrap_texel8(j0 + 1, l.height, s.wrap_t);
+            std::array<f8, 4> c[4];  // the footprint's texels: (ia, ja), (ib, ja), (ia, jb), (ib, jb)
+            const i8 is[4] = {ia, ib, ia, ib}, js[4] = {ja, ja, jb, jb};
+            for (int t = 0; t < 4; ++t) {
+                const i8 border = (is[t] < 0) | (js[t] < 0);  // (never without a border wrap mode)
+                const i8 index = l.offset + ((js[t] >> 2) * l.tiles_x + (is[t] >> 2)) * 16 + (js[t] & 3) * 4 + (is[t] & 3);
+                i8 texel;
+                gather<Wide>(texels, has_border ? select(border, splat_i(0), index) : index, texel);
+                for (int k = 0; k < 4; ++k) {
+                    f8 value;
+                    if (Srgb && k < 3) {  // decoded texel by texel, before the filter
+                        const i8 byte = (texel >> (8 * k)) & 255;
+                        for (int lane = 0; lane < simd::kLanes; ++lane) value[lane] = decode[size_t(byte[lane])];
+                    } else {
+                        value = to_float((texel >> (8 * k)) & 255) * (1.0f / 255.0f);
+                    }
+                    c[t][size_t(k)] = has_border ? select(border, splat(s.border[k]), value) : value;
+                }
+            }
+            for (size_t k = 0; k < 4; ++k) {
+                const f8 bottom = c[0][k] * (1.0f - fx) + c[1][k] * fx, top = c[2][k] * (1.0f - fx) + c[3][k] * fx;
+                out[k] = bottom * (1.0f - fy) + top * fy;
+            }
+        };
+        if constexpr (!Aniso) {
+            const f8 ur = reduce8(u, s.wrap_s), vr = reduce8(v, s.wrap_t);
+            at_level(lane_levels(level0), ur, vr, rgba);
+            if (two_levels) {
+                std::array<f8, 4> c1;
+                at_level(lane_levels(level1), ur, vr, c1);
+                for (size_t k = 0; k < 4; ++k) rgba[k] = rgba[k] + (c1[k] - rgba[k]) * weight;
+            }
+            return;
         }
-    };
-    auto lookup = [&](const f8& pu, const f8& pv, std::array<f8, 4>& out) {
-        const f8 ur = reduce8(pu, s.wrap_s), vr = reduce8(pv, s.wrap_t);
-        at_level(levels0, ur, vr, out);
-        if (two_levels) {
-            std::array<f8, 4> c1;
-            at_level(levels1, ur, vr, c1);
-            for (size_t k = 0; k < 4; ++k) out[k] = out[k] + (c1[k] - out[k]) * weight;
+        // Anisotropic: the same lookup at each probe (sample()'s loop); a lane adds its k-th
+        // only while k < its N.
+        const LaneLevels levels0 = lane_levels(level0), levels1 = two_levels ? lane_levels(level1) : levels0;
+        auto lookup = [&](const f8& pu, const f8& pv, std::array<f8, 4>& out) {
+            const f8 ur = reduce8(pu, s.wrap_s), vr = reduce8(pv, s.wrap_t);
+            at_level(levels0, ur, vr, out);
+            if (two_levels) {
+                std::array<f8, 4> c1;
+                at_level(levels1, ur, vr, c1);
+                for (size_t k = 0; k < 4; ++k) out[k] = out[k] + (c1[k] - out[k]) * weight;
+            }
+        };
+        int most_probes = 1;
+        for (int lane = 0; lane < simd::kLanes; ++lane) most_probes = std::max(most_probes, int(probes[lane]));
+        if (most_probes == 1) return lookup(u, v, rgba);
+        rgba = {splat(0.0f), splat(0.0f), splat(0.0f), splat(0.0f)};
+        for (int k = 0; k < most_probes; ++k) {
+            const f8 t = to_float(splat_i(2 * k + 1)) / to_float(probes + probes) - 0.5f;
+            const i8 used = splat_i(k) < probes, moved = probes > 1;  // (one probe: uv itself, as sample() reads it)
+            std::array<f8, 4> probe;
+            lookup(select(moved, u + t * axis_u, u), select(moved, v + t * axis_v, v), probe);
+            for (size_t c = 0; c < 4; ++c) rgba[c] = rgba[c] + select(used, probe[c], splat(0.0f));
         }
+        for (size_t c = 0; c < 4; ++c) rgba[c] = rgba[c] / to_float(probes);
     };
-    if (s.max_anisotropy <= 1) return lookup(u, v, rgba);
-    int most_probes = 1;
-    for (int lane = 0; lane < simd::kLanes; ++lane) most_probes = std::max(most_probes, int(probes[lane]));
-    if (most_probes == 1) return lookup(u, v, rgba);
-    // The anisotropic lookups (sample()'s loop): a lane adds its k-th only while k < its N.
-    rgba = {splat(0.0f), splat(0.0f), splat(0.0f), splat(0.0f)};
-    for (int k = 0; k < most_probes; ++k) {
-        const f8 t = to_float(splat_i(2 * k + 1)) / to_float(probes + probes) - 0.5f;
-        const i8 used = splat_i(k) < probes, moved = probes > 1;  // (one probe: uv itself, as sample() reads it)
-        std::array<f8, 4> probe;
-        lookup(select(moved, u + t * axis_u, u), select(moved, v + t * axis_v, v), probe);
-        for (size_t c = 0; c < 4; ++c) rgba[c] = rgba[c] + select(used, probe[c], splat(0.0f));
-    }
-    for (size_t c = 0; c < 4; ++c) rgba[c] = rgba[c] / to_float(probes);
+    if (s.max_anisotropy > 1) body.template operator()<true>();
+    else body.template operator()<false>();
 }
 
 // In the CPU's best copy (simd.h).

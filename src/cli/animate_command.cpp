@@ -1,0 +1,67 @@
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "cli/commands.h"
+#include "cli/model_options.h"
+#include "cli/progress.h"
+#include "softraster/error.h"
+#include "softraster/io/animation_write.h"
+#include "softraster/scene/animation.h"
+#include "softraster/scene/scene_renderer.h"
+
+namespace softraster::cli {
+
+Run add_animate_command(CLI::App& app) {
+    struct Options {
+        std::string input, out;
+        double turntable = 4.0, duration = 0.0;
+        int fps = 25, threads = 0;
+        ModelOptions model;
+    };
+    auto opt = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand("animate", "Render a turntable of a scene or model file to a video, a GIF or numbered pictures");
+    cmd->add_option("input", opt->input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
+    cmd->add_option("-o,--output", opt->out, "Output by extension: .mp4 (H.264), .webm (VP9), .gif, or numbered pictures such as frames/%04d.png")
+        ->required();
+    cmd->add_option("--turntable", opt->turntable, "Seconds per full turn of the objects about the vertical axis")
+        ->check(CLI::Range(1e-3, 1e6))
+        ->capture_default_str();
+    cmd->add_option("--duration", opt->duration, "Seconds of animation (default: one turn)")->check(CLI::Range(1e-3, 1e6));
+    cmd->add_option("--fps", opt->fps, "Frames per second")->check(CLI::Range(1, 240))->capture_default_str();
+    add_threads_option(*cmd, opt->threads);
+    add_model_options(*cmd, opt->model, 512);
+    cmd->footer("Examples:\n  softraster animate model.glb --turntable 4 -o spin.mp4\n"
+                "  softraster animate model.glb --size 320 --fps 20 -o spin.gif\n"
+                "  softraster animate scene.json --duration 2 -o frames/%04d.png\n"
+                "Frame k shows time k / fps: the same picture as 'render --turntable SECONDS --time k/fps'.");
+    return [opt, cmd] {
+        const std::filesystem::path out = opt->out;
+        check_animation_path(out);
+        const Scene scene = input_scene(opt->input, opt->model, *cmd);
+        const double duration = opt->duration > 0.0 ? opt->duration : opt->turntable;
+        const long frames = std::max(1L, std::lround(duration * opt->fps));
+        if (frames > 1000000) throw InputError("--duration times --fps gives more than a million frames");
+        const auto start = std::chrono::steady_clock::now();
+        const Turntable turntable{opt->turntable};
+        std::unique_ptr<AnimationWriter> writer;
+        Progress progress{size_t(frames), "frames"};
+        for (long k = 0; k < frames; ++k) {
+            const Scene frame = turned_scene(scene, turntable_angle(turntable, double(k) / opt->fps));
+            const Image picture = SceneRenderer(frame, thread_count(opt->threads)).render();
+            if (!writer) writer = open_animation(out, picture.width, picture.height, opt->fps, scene.color_space);
+            writer->add(picture);
+            progress.update(size_t(k + 1), "");
+        }
+        writer->finish();
+        progress.clear();
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "wrote %s (%ld frames, %dx%d, %d fps) in %.1f s\n", out.string().c_str(), frames, scene.width, scene.height,
+                     opt->fps, seconds);
+        return 0;
+    };
+}
+
+}  // namespace softraster::cli

@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""animate_test.py SOFTRASTER WORKDIR: `softraster animate` and `render --turntable --time`.
+
+Numbered PNG frames are exact: frame k is byte-identical to `render` at time k / fps. Videos
+and GIFs are read back with ffprobe (frame count, duration, codec) and a frame of the video
+extracted with ffmpeg is compared with `render` at its time (within the codec's loss). GIF
+frame delays and the loop block are read from the file itself. Bad outputs are refused
+before anything is rendered and leave no file."""
+import json, os, shutil, struct, subprocess, sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', 'tools'))
+import imgdiff  # noqa: E402
+
+exe, work = sys.argv[1:3]
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+MODEL = os.path.join(HERE, '..', 'scenes', 'models', 'normal_mapped.gltf')
+COMMON = ['--turntable', '2', '--fps', '10', '--size', '96x64', '--samples', '1']
+failures = []
+
+
+def run(args, cwd=work):
+    return subprocess.run([exe] + args, capture_output=True, text=True, timeout=300, cwd=cwd)
+
+
+def check(name, ok, detail=''):
+    if not ok:
+        failures.append('%s %s' % (name, detail))
+
+
+def probe(path):
+    r = subprocess.run(['ffprobe', '-v', 'error', '-count_frames', '-show_entries',
+                        'stream=codec_name,nb_read_frames,width,height:format=duration', '-of', 'json', path],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        return None
+    j = json.loads(r.stdout)
+    s = j['streams'][0]
+    return s['codec_name'], int(s['nb_read_frames']), float(j['format']['duration']), s['width'], s['height']
+
+
+def psnr(a, b):
+    line, _ = imgdiff.compare(a, b)
+    return json.loads(line)['psnr_db']
+
+
+# Numbered pictures: 20 frames (2 s at 10 fps); frames 0, 3 and 7 equal render at 0, 0.3, 0.7 s.
+r = run(['animate', MODEL, '-o', 'frames/%03d.png'] + COMMON)
+check('animate png frames', r.returncode == 0, r.stderr)
+names = sorted(os.listdir(os.path.join(work, 'frames'))) if os.path.isdir(os.path.join(work, 'frames')) else []
+check('20 numbered frames', names == ['%03d.png' % k for k in range(20)], names)
+for k in (0, 3, 7):
+    target = 'render_%d.png' % k
+    r = run(['render', MODEL, '-o', target, '--time', '%g' % (k / 10)] + [a for a in COMMON if a not in ('--fps', '10')])
+    check('render --time %g' % (k / 10), r.returncode == 0, r.stderr)
+    with open(os.path.join(work, target), 'rb') as a, open(os.path.join(work, 'frames', '%03d.png' % k), 'rb') as b:
+        check('frame %d is render --time' % k, a.read() == b.read())
+r = run(['render', MODEL, '-o', 'plain.png', '--size', '96x64', '--samples', '1'])
+with open(os.path.join(work, 'plain.png'), 'rb') as a, open(os.path.join(work, 'frames', '000.png'), 'rb') as b:
+    check('frame 0 is the plain render', a.read() == b.read())
+with open(os.path.join(work, 'render_3.png'), 'rb') as a, open(os.path.join(work, 'plain.png'), 'rb') as b:
+    check('the model turns', a.read() != b.read())
+
+# Videos: codec, frame count and duration read back; frame 5 within the codec's loss of render at 0.5 s.
+for name, codec in (('spin.mp4', 'h264'), ('spin.webm', 'vp9')):
+    r = run(['animate', MODEL, '-o', name] + COMMON)
+    check('animate ' + name, r.returncode == 0, r.stderr)
+    got = probe(os.path.join(work, name))
+    check(name + ' read back', got is not None and got[0] == codec and got[1] == 20 and abs(got[2] - 2.0) < 1e-3 and got[3:] == (96, 64), got)
+    still = name + '.5.png'
+    subprocess.run(['ffmpeg', '-v', 'error', '-y', '-i', os.path.join(work, name), '-vf', r'select=eq(n\,5)', '-frames:v', '1',
+                    os.path.join(work, still)], check=False)
+    r = run(['render', MODEL, '-o', 'render_5.png', '--time', '0.5'] + [a for a in COMMON if a not in ('--fps', '10')])
+    p = psnr(os.path.join(work, 'render_5.png'), os.path.join(work, still)) if os.path.exists(os.path.join(work, still)) else 0
+    check(name + ' frame 5 is render --time 0.5 (PSNR %.1f)' % p, p > 30, p)
+    check(name + ' no temporary left', not os.path.exists(os.path.join(work, name + '.part')))
+
+
+# GIF: 20 frames, each 10/100 s, looping; read from the blocks of the file.
+def gif_blocks(path):
+    data = open(path, 'rb').read()
+    assert data[:6] == b'GIF89a', data[:6]
+    flags = data[10]
+    at = 13 + (3 * 2 ** ((flags & 7) + 1) if flags & 0x80 else 0)
+    frames, delays, loops = 0, [], False
+
+    def skip_sub_blocks(i):
+        while data[i]:
+            i += data[i] + 1
+        return i + 1
+
+    while data[at] != 0x3B:
+        if data[at] == 0x21:  # extension
+            label = data[at + 1]
+            if label == 0xF9:
+                delays.append(struct.unpack('<H', data[at + 4:at + 6])[0])
+            if label == 0xFF and data[at + 3:at + 14] == b'NETSCAPE2.0':
+                loops = True
+            at = skip_sub_blocks(at + 2)
+        elif data[at] == 0x2C:  # image
+            frames += 1
+            packed = data[at + 9]
+            at += 10 + (3 * 2 ** ((packed & 7) + 1) if packed & 0x80 else 0)
+            at = skip_sub_blocks(at + 1)  # LZW minimum code size, then the data
+        else:
+            raise ValueError('bad block %#x at %d' % (data[at], at))
+    return frames, delays, loops
+
+
+r = run(['animate', MODEL, '-o', 'spin.gif'] + COMMON)
+check('animate gif', r.returncode == 0, r.stderr)
+try:
+    frames, delays, loops = gif_blocks(os.path.join(work, 'spin.gif'))
+    check('gif frames and delays', frames == 20 and delays == [10] * 20 and loops, (frames, delays, loops))
+except (OSError, ValueError, AssertionError, IndexError) as e:
+    check('gif readable', False, e)
+# 30 fps: delays of 3 and 4 hundredths keep the total on time (20 frames = 2/3 s).
+r = run(['animate', MODEL, '-o', 'fast.gif', '--fps', '30', '--duration', '0.6667', '--size', '32', '--samples', '1'])
+frames, delays, _ = gif_blocks(os.path.join(work, 'fast.gif')) if r.returncode == 0 else (0, [], False)
+check('gif at 30 fps', frames == 20 and set(delays) == {3, 4} and sum(delays) == 67, (r.stderr, frames, delays))
+
+# Bad outputs and flags: one line, exit 2, nothing written.
+for args, what in [(['-o', 'spin.avi'], 'spin.avi'), (['-o', 'f/%d_%d.png'], '%d'), (['-o', 'odd.mp4', '--size', '95x64'], 'even'),
+                   (['-o', 'x.gif', '--fps', '0'], '--fps'), (['-o', 'x.gif', '--turntable', '0'], '--turntable')]:
+    r = run(['animate', MODEL] + args)
+    target = os.path.join(work, args[1])
+    check('animate %s' % args, r.returncode == 2 and what in r.stderr and len(r.stderr.strip().splitlines()) == 1
+          and not os.path.exists(target) and not os.path.exists(target + '.part'), '%d %r' % (r.returncode, r.stderr))
+r = run(['render', MODEL, '-o', 'nt.png', '--time', '1'])
+check('render --time needs --turntable', r.returncode == 2 and '--turntable' in r.stderr, r.stderr)
+r = run(['animate', 'missing.glb', '-o', 'm.gif'])
+check('animate missing model', r.returncode == 2 and 'missing.glb' in r.stderr and not os.path.exists(os.path.join(work, 'm.gif')), r.stderr)
+
+if failures:
+    print('FAILED:\n  ' + '\n  '.join(failures))
+    sys.exit(1)
+print('ok')
