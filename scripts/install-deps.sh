@@ -7,12 +7,12 @@ SUDO=""
 pkgs=(cmake ninja-build g++ pkg-config python3
       libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev libopenexr-dev libpng-dev libnetpbm-dev
       libopenimageio-dev libassimp-dev
-      libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libgif-dev libimagequant-dev)
+      libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libgif-dev libimagequant-dev libchafa-dev)
 if [ "${1:-}" = "--tests" ]; then
   # GoogleTest and Google Benchmark for the suite; OSMesa (Mesa llvmpipe) is the test-only reference;
   # assimp-testmodels: the corpus of real model files the thumbnails test renders.
-  # ffmpeg: ffprobe and ffmpeg read the animations back.
-  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels ffmpeg)
+  # ffmpeg: ffprobe and ffmpeg read the animations back; tmux shows the terminal preview.
+  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels ffmpeg tmux)
 fi
 missing=()
 for p in "${pkgs[@]}"; do

@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "cli/model_options.h"
 #include "cli/output.h"
+#include "cli/terminal_picture.h"
 #include "softraster/error.h"
 #include "softraster/io/image_write.h"
 #include "softraster/pipeline/resolve.h"
@@ -34,6 +35,7 @@ Run add_render_command(CLI::App& app) {
         int threads = 0;
         ModelOptions model;
         double turntable = 0.0, time = 0.0;
+        bool terminal = false;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand("render", "Render a scene file or a model file to a picture (PNG, TGA, PPM or EXR)");
@@ -46,6 +48,8 @@ Run add_render_command(CLI::App& app) {
                     "Also write the depth buffer: .png (16-bit, scaled from its least to its greatest finite value) or .exr (float, as stored)");
     cmd->add_option("--stencil-out", opt->stencil_out, "Also write the stencil buffer as an 8-bit gray .png");
     add_threads_option(*cmd, opt->threads);
+    cmd->add_flag("--terminal", opt->terminal,
+                  "Also draw the picture in the terminal (24-bit color half blocks, sized to the terminal); without -o, only there");
     add_model_options(*cmd, opt->model, 512);
     CLI::Option* turntable = cmd->add_option("--turntable", opt->turntable, "With --time: the frame of 'animate --turntable SECONDS' at that time")
                                  ->check(CLI::Range(1e-3, 1e6));
@@ -60,7 +64,8 @@ Run add_render_command(CLI::App& app) {
         const std::filesystem::path scene_path = opt->scene;
         const std::filesystem::path out =
             opt->out.empty() ? std::filesystem::path(scene_path.stem().string() + ".png") : std::filesystem::path(opt->out);
-        check_output_path(out);
+        const bool write_file = !opt->terminal || !opt->out.empty();
+        if (write_file) check_output_path(out);
         if (!opt->depth_out.empty()) check_output_path(opt->depth_out, {PictureFormat::Png, PictureFormat::Exr});
         if (!opt->stencil_out.empty()) check_output_path(opt->stencil_out, {PictureFormat::Png});
         const auto start = std::chrono::steady_clock::now();
@@ -69,7 +74,9 @@ Run add_render_command(CLI::App& app) {
         const SceneRenderer renderer(scene, thread_count(opt->threads));
         Framebuffer fb = renderer.make_framebuffer();
         renderer.render(fb);
-        write_output(renderer.resolve(fb), out, std::chrono::steady_clock::now() - start, scene.color_space);
+        const Image picture = renderer.resolve(fb);
+        if (opt->terminal) print_terminal_picture(picture, terminal_size(), stdout);
+        if (write_file) write_output(picture, out, std::chrono::steady_clock::now() - start, scene.color_space);
         // (The buffers at the resolution they were rendered at: supersampled scenes' are larger.)
         if (!opt->depth_out.empty()) {
             const GrayImage<float> depth = depth_picture(fb);
