@@ -16,6 +16,7 @@ Run add_showcase_command(CLI::App& app);
 Run add_bench_command(CLI::App& app);
 Run add_thumbnails_command(CLI::App& app);
 Run add_animate_command(CLI::App& app);
+Run add_view_command(CLI::App& app);
 
 // --threads: a count, or 0 for one thread per core.
 inline void add_threads_option(CLI::App& cmd, int& threads) {

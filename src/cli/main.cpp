@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     const cli::Run bench = cli::add_bench_command(app);
     const cli::Run thumbnails = cli::add_thumbnails_command(app);
     const cli::Run animate = cli::add_animate_command(app);
+    const cli::Run view = cli::add_view_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("bench")) return bench();
         if (app.got_subcommand("thumbnails")) return thumbnails();
         if (app.got_subcommand("animate")) return animate();
+        if (app.got_subcommand("view")) return view();
     } catch (const InputError& e) {
         std::cerr << "softraster: error: " << e.what() << "\n";
         return cli::kExitBadInput;

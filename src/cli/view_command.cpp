@@ -1,0 +1,189 @@
+// softraster view: a scene or model in a window, turned with the mouse and keys, redrawn
+// with all cores; the file reloads when it changes.
+//
+// Double buffering, as the book this project grows from builds it: the renderer draws the
+// next frame into the back buffer while the window keeps showing the front one; when the
+// frame is complete the two swap and the window presents the new front. The window (SDL)
+// only presents pixels; src/platform/window.h.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "cli/commands.h"
+#include "cli/model_options.h"
+#include "platform/window.h"
+#include "softraster/error.h"
+#include "softraster/io/image_write.h"
+#include "softraster/scene/animation.h"
+#include "softraster/scene/scene_renderer.h"
+
+namespace softraster::cli {
+namespace {
+
+constexpr Shading kShadings[] = {Shading::Lambert, Shading::BlinnPhong, Shading::Phong, Shading::Pbr, Shading::Unlit,
+                                 Shading::Flat,    Shading::Gouraud,    Shading::Normals};
+constexpr const char* kShadingNames[] = {"lambert", "blinn_phong", "phong", "pbr", "unlit", "flat", "gouraud", "normals"};
+constexpr const char* kFilterNames[] = {"nearest", "bilinear", "trilinear"};
+constexpr double kKeyStep = 15.0;  // degrees per arrow key: k presses = render --turntable 24 --time k
+
+// What the user has changed, applied to the loaded scene for each frame.
+struct View {
+    double azimuth = 0.0, elevation = 0.0;  // degrees: the turntable, and the camera's height
+    float zoom = 1.0f;
+    glm::vec2 pan{0.0f};                     // in units of the distance to the target
+    int shading = -1, filter = -1;           // indices into the tables above, -1: the file's own
+    bool wireframe = false, depth = false, no_cull = false;
+    std::optional<int> samples;
+    int width = 0, height = 0;               // 0: the scene's size
+};
+
+Scene frame_scene(const Scene& loaded, const View& v) {
+    Scene s = turned_scene(loaded, v.azimuth);
+    if (v.width > 0) s.width = v.width, s.height = v.height;
+    if (v.samples) s.samples = *v.samples;
+    Camera& c = s.camera;
+    const glm::vec3 up = glm::normalize(c.up);
+    glm::vec3 offset = c.eye - c.target;
+    const glm::vec3 right = glm::normalize(glm::cross(-offset, up));
+    if (v.elevation != 0.0) {  // about the camera's right axis, through the target (Rodrigues)
+        const float a = float(glm::radians(v.elevation));
+        offset = offset * std::cos(a) + glm::cross(right, offset) * std::sin(a) + right * glm::dot(right, offset) * (1.0f - std::cos(a));
+    }
+    offset /= v.zoom;
+    if (c.orthographic) c.height /= v.zoom;
+    const float distance = glm::length(offset);
+    const glm::vec3 view_up = glm::normalize(glm::cross(right, -offset));
+    const glm::vec3 shift = (right * v.pan.x + view_up * v.pan.y) * distance;
+    c.target += shift;
+    c.eye = c.target + offset;
+    for (SceneObject& o : s.objects) {
+        if (v.depth) o.material.shading = Shading::Depth;
+        else if (v.shading >= 0) o.material.shading = kShadings[v.shading];
+        if (v.wireframe && o.primitive == Topology::Triangles) o.wireframe = Wireframe{};
+        if (v.no_cull) o.cull = CullMode::None;
+        if (v.filter >= 0) {
+            o.material.sampler.mag = o.material.sampler.min = v.filter == 0 ? Filter::Nearest : Filter::Bilinear;
+            o.material.sampler.mip = v.filter == 2 ? MipFilter::Linear : MipFilter::None;
+        }
+    }
+    return s;
+}
+
+std::string status_line(const Scene& s, const View& v, double ms, size_t triangles) {
+    char text[512];
+    std::snprintf(text, sizeof text, "%.1f ms  %.0f fps  %zu tris  %dx%d  %s%s  msaa %dx  cull %s  filter %s%s", ms, ms > 0 ? 1000.0 / ms : 0.0, triangles, s.width, s.height, v.depth ? "depth" : (v.shading >= 0 ? kShadingNames[v.shading] : "file's shading"),
+                  "", s.samples, v.no_cull ? "none" : "file", v.filter >= 0 ? kFilterNames[v.filter] : "file",
+                  v.wireframe ? "  wireframe" : "");
+    return text;
+}
+
+std::filesystem::file_time_type modified(const std::filesystem::path& p) {
+    std::error_code ec;
+    const auto t = std::filesystem::last_write_time(p, ec);
+    return ec ? std::filesystem::file_time_type{} : t;
+}
+
+}  // namespace
+
+Run add_view_command(CLI::App& app) {
+    struct Options {
+        std::string input, screenshots = ".";
+        int threads = 0;
+        ModelOptions model;
+    };
+    auto opt = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand("view", "Show a scene or model file in a window: turn it around, change the settings live");
+    cmd->add_option("input", opt->input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
+    cmd->add_option("--screenshots", opt->screenshots, "Folder the screenshot key (p or F12) writes softraster-view-NNN.png into")
+        ->capture_default_str();
+    add_threads_option(*cmd, opt->threads);
+    add_model_options(*cmd, opt->model, 512);
+    cmd->footer("Mouse: drag to turn, right-drag to pan, wheel to zoom. Keys: arrows turn and tilt by 15 degrees, r reset,\n"
+                "s shading, w wireframe, m MSAA, c culling, d depth picture, f texture filter, p or F12 screenshot, q or Esc quit.\n"
+                "The file reloads when it changes; an error in it is shown and the last good version stays.");
+    return [opt, cmd] {
+        const std::filesystem::path path = opt->input;
+        Scene loaded = input_scene(path, opt->model, *cmd);
+        auto stamp = modified(path);
+        View view;
+        platform::Window window("softraster view: " + path.filename().string(), loaded.width, loaded.height);
+        Image front, back;  // the window shows front; the next frame is drawn into back
+        std::string error, status;
+        int screenshot = 0;
+        bool dirty = true, quit = false;
+        auto draw = [&] {
+            const Scene scene = frame_scene(loaded, view);
+            const SceneRenderer renderer(scene, thread_count(opt->threads));
+            const auto start = std::chrono::steady_clock::now();
+            back = renderer.render();
+            const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            std::swap(front, back);  // the frame is complete: it becomes the one shown
+            status = status_line(scene, view, ms, renderer.triangle_count());
+            window.present(front, status, error);
+            dirty = false;
+        };
+        while (!quit) {
+            if (dirty) draw();
+            for (const platform::InputEvent& e : window.events(250)) {
+                using Kind = platform::InputEvent::Kind;
+                if (e.kind != Kind::Key || (e.key != 'p' && e.key != platform::kKeyF12)) dirty = true;
+                if (e.kind == Kind::Quit) quit = true;
+                if (e.kind == Kind::Resize) view.width = e.width, view.height = e.height;
+                if (e.kind == Kind::Wheel) view.zoom *= std::pow(1.1f, e.dy);
+                if (e.kind == Kind::Drag && e.button == 1) {
+                    view.azimuth += 0.5 * e.dx;
+                    view.elevation = std::clamp(view.elevation + 0.5 * e.dy, -85.0, 85.0);
+                }
+                if (e.kind == Kind::Drag && e.button == 3) view.pan += glm::vec2(-e.dx, e.dy) * 0.002f;
+                if (e.kind != Kind::Key) continue;
+                switch (e.key) {
+                    case platform::kKeyLeft: view.azimuth -= kKeyStep; break;
+                    case platform::kKeyRight: view.azimuth += kKeyStep; break;
+                    case platform::kKeyUp: view.elevation = std::min(view.elevation + kKeyStep, 85.0); break;
+                    case platform::kKeyDown: view.elevation = std::max(view.elevation - kKeyStep, -85.0); break;
+                    case 'r': view.azimuth = view.elevation = 0.0, view.zoom = 1.0f, view.pan = glm::vec2(0.0f); break;
+                    case 's': view.shading = (view.shading + 1) % int(std::size(kShadings)); break;
+                    case 'w': view.wireframe = !view.wireframe; break;
+                    case 'm': view.samples = frame_scene(loaded, view).samples > 1 ? 1 : 4; break;
+                    case 'c': view.no_cull = !view.no_cull; break;
+                    case 'd': view.depth = !view.depth; break;
+                    case 'f': view.filter = view.filter == 2 ? -1 : view.filter + 1; break;
+                    case 'q':
+                    case platform::kKeyEscape: quit = true; break;
+                    case 'p':
+                    case platform::kKeyF12: {
+                        if (dirty) draw();  // the frame of every input before this key
+                        char name[64];
+                        std::snprintf(name, sizeof name, "softraster-view-%03d.png", screenshot++);
+                        const std::filesystem::path shot = std::filesystem::path(opt->screenshots) / name;
+                        write_picture(front, shot, loaded.color_space);  // the exact frame shown, without the status line
+                        std::fprintf(stderr, "wrote %s (%dx%d)\n", shot.string().c_str(), front.width, front.height);
+                        break;
+                    }
+                    default: break;
+                }
+            }
+            if (const auto now = modified(path); now != stamp) {  // reload; keep the last good scene on an error
+                stamp = now;
+                try {
+                    loaded = input_scene(path, opt->model, *cmd);
+                    error.clear();
+                } catch (const InputError& e) {
+                    error = e.what();
+                }
+                dirty = true;
+            }
+        }
+        return 0;
+    };
+}
+
+}  // namespace softraster::cli
