@@ -28,6 +28,10 @@ Window::Window(const std::string& title, int width, int height) : impl_(std::mak
     // Without X11 or Wayland (an SSH session, a server) SDL would try the console's own
     // devices; say so instead, unless SDL_VIDEODRIVER asks for one.
     const bool display = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY") || std::getenv("SDL_VIDEODRIVER");
+    // The pictures are finished pixels: SDL's software renderer copies them to the window,
+    // with no OpenGL (which would start a GL driver and its threads beside ours).
+    SDL_SetHint(SDL_HINT_RENDER_DRIVER, "software");
+    SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
     if (!display || SDL_Init(SDL_INIT_VIDEO) != 0)
         throw InputError(std::string("no display to open a window on (") + (display ? SDL_GetError() : "DISPLAY is not set") +
                          "): try 'softraster render --terminal' or 'softraster animate'");

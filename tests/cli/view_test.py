@@ -38,13 +38,25 @@ env = {k: v for k, v in os.environ.items() if k not in ('DISPLAY', 'WAYLAND_DISP
 r = subprocess.run([exe, 'view', MODEL], capture_output=True, text=True, timeout=60, env=env)
 check('no display: exit 2, one line', r.returncode == 2 and 'animate' in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr)
 
-# A virtual display: Xvfb picks a free number and writes it to the pipe.
-read_fd, write_fd = os.pipe()
-xvfb = subprocess.Popen(['Xvfb', '-displayfd', str(write_fd), '-screen', '0', '800x600x24', '-nolisten', 'tcp'],
-                        pass_fds=(write_fd,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-os.close(write_fd)
-display = ':' + os.read(read_fd, 16).decode().strip()
-os.close(read_fd)
+# A virtual display: Xvfb picks a free number and writes it to the pipe (nothing if it could
+# not start: then again).
+for attempt in range(5):
+    read_fd, write_fd = os.pipe()
+    xvfb = subprocess.Popen(['Xvfb', '-displayfd', str(write_fd), '-screen', '0', '800x600x24', '-nolisten', 'tcp'],
+                            pass_fds=(write_fd,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write_fd)
+    number = b''
+    while not number.endswith(b'\n'):
+        chunk = os.read(read_fd, 16)
+        if not chunk:
+            break
+        number += chunk
+    os.close(read_fd)
+    if number.strip():
+        break
+    xvfb.wait()
+    time.sleep(1)
+display = ':' + number.decode().strip()
 xenv = dict(env, DISPLAY=display)
 # Under AddressSanitizer: libdbus and the X11 libraries SDL loads keep a few blocks to the
 # end (not softraster's); memory errors are still caught, leaks are not counted here.
@@ -60,12 +72,17 @@ def start_view(input_path, shots, *args):
     os.makedirs(shots, exist_ok=True)
     p = subprocess.Popen([exe, 'view', input_path, '--screenshots', shots] + list(args), env=xenv, stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
-    for _ in range(200):
+    start = time.time()
+    while time.time() - start < 60:
         ids = xdotool('search', '--name', 'softraster view')
         if ids:
             time.sleep(0.5)  # (mapped and taking input)
             return p, ids.split()[0]
+        if p.poll() is not None:
+            break
         time.sleep(0.05)
+    p.kill()
+    failures.append('view %s: no window after %.1f s (exit %s): %s' % (input_path, time.time() - start, p.poll(), p.communicate()[1][-300:]))
     return p, None
 
 
@@ -142,7 +159,8 @@ try:
             pass
     view.kill()
 finally:
-    xvfb.kill()
+    xvfb.terminate()  # (SIGTERM: the server removes its lock file)
+    xvfb.wait()
 
 if failures:
     print('FAILED:\n  ' + '\n  '.join(failures))
