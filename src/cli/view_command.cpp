@@ -152,7 +152,7 @@ Run add_view_command(CLI::App& app) {
                     case 'r': view.azimuth = view.elevation = 0.0, view.zoom = 1.0f, view.pan = glm::vec2(0.0f); break;
                     case 's': view.shading = (view.shading + 1) % int(std::size(kShadings)); break;
                     case 'w': view.wireframe = !view.wireframe; break;
-                    case 'm': view.samples = frame_scene(loaded, view).samples > 1 ? 1 : 4; break;
+                    case 'm': view.samples = view.samples.value_or(loaded.samples) > 1 ? 1 : 4; break;
                     case 'c': view.no_cull = !view.no_cull; break;
                     case 'd': view.depth = !view.depth; break;
                     case 'f': view.filter = view.filter == 2 ? -1 : view.filter + 1; break;
