@@ -6,7 +6,7 @@
 #include "cli/commands.h"
 #include "cli/model_options.h"
 #include "cli/output.h"
-#include "cli/terminal_picture.h"
+#include "platform/terminal_picture.h"
 #include "softraster/error.h"
 #include "softraster/io/image_write.h"
 #include "softraster/pipeline/resolve.h"
@@ -51,11 +51,11 @@ Run add_render_command(CLI::App& app) {
     cmd->add_flag("--terminal", opt->terminal,
                   "Also draw the picture in the terminal (24-bit color half blocks, sized to the terminal); without -o, only there");
     add_model_options(*cmd, opt->model, 512);
-    CLI::Option* turntable = cmd->add_option("--turntable", opt->turntable, "With --time: the frame of 'animate --turntable SECONDS' at that time")
-                                 ->check(CLI::Range(1e-3, 1e6));
-    cmd->add_option("--time", opt->time, "Seconds into the turntable (the same picture as that frame of 'animate')")
+    cmd->add_option("--time", opt->time,
+                    "Seconds into the scene's keyframes or the model's animation, and the turntable (the same picture as that frame of 'animate')")
         ->check(CLI::Range(0.0, 1e9))
-        ->needs(turntable);
+        ->capture_default_str();
+    cmd->add_option("--turntable", opt->turntable, "The frame of 'animate --turntable SECONDS' at --time")->check(CLI::Range(1e-3, 1e6));
     cmd->footer("Examples:\n  softraster render scenes/tri_basic.json -o tri.png\n"
                 "  softraster render duck.glb -o duck.png --size 800x600 --view front\n"
                 "The model options (--size ... --camera) apply to model files only.\n"
@@ -70,12 +70,12 @@ Run add_render_command(CLI::App& app) {
         if (!opt->stencil_out.empty()) check_output_path(opt->stencil_out, {PictureFormat::Png});
         const auto start = std::chrono::steady_clock::now();
         Scene scene = input_scene(scene_path, opt->model, *cmd);
-        if (opt->turntable > 0.0) scene = turned_scene(scene, turntable_angle(Turntable{opt->turntable}, opt->time));
+        scene = frame_at(scene, opt->time, opt->turntable > 0.0 ? std::optional<Turntable>(Turntable{opt->turntable}) : std::nullopt);
         const SceneRenderer renderer(scene, thread_count(opt->threads));
         Framebuffer fb = renderer.make_framebuffer();
         renderer.render(fb);
         const Image picture = renderer.resolve(fb);
-        if (opt->terminal) print_terminal_picture(picture, terminal_size(), stdout);
+        if (opt->terminal) platform::print_terminal_picture(picture, platform::terminal_size(), stdout);
         if (write_file) write_output(picture, out, std::chrono::steady_clock::now() - start, scene.color_space);
         // (The buffers at the resolution they were rendered at: supersampled scenes' are larger.)
         if (!opt->depth_out.empty()) {

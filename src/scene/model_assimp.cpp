@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "scene/model_animation.h"
 #include "softraster/error.h"
 #include "softraster/io/image_io.h"
 #include "softraster/scene/model.h"
@@ -135,7 +136,8 @@ public:
     Model load() {
         for (unsigned i = 0; i < scene_.mNumMaterials; ++i) materials_.push_back(read_material(*scene_.mMaterials[i]));
         for (unsigned i = 0; i < scene_.mNumMeshes; ++i) meshes_.push_back(read_mesh(i));
-        place(*scene_.mRootNode, glm::mat4(1.0f));
+        motions_ = read_node_motions(scene_, ignored_);
+        place(*scene_.mRootNode, glm::mat4(1.0f), {});
         if (model_.objects.empty()) fail("nothing to draw (no triangles, lines or points)");
         for (unsigned i = 0; i < scene_.mNumCameras; ++i) read_camera(*scene_.mCameras[i]);
         // Lights as glTF's KHR_lights_punctual defines them; other formats' lights have
@@ -421,11 +423,25 @@ private:
         mesh.tangent_vertices = std::move(out);
     }
 
-    void place(const aiNode& node, const glm::mat4& parent) {
+    // `chain`: the links from the root to the parent once a node on the way is animated
+    // (empty before: then `parent` is all there is).
+    void place(const aiNode& node, const glm::mat4& parent, const std::vector<MotionLink>& chain) {
         // (check_structure bounded the depth and the indices.)
-        const glm::mat4 world = parent * to_glm(node.mTransformation);
+        const glm::mat4 local = to_glm(node.mTransformation), world = parent * local;
         if (!finite(world)) fail("node '" + std::string(node.mName.C_Str()) + "' has a non-finite transform");
         world_[node.mName.C_Str()] = world;
+        std::vector<MotionLink> links = chain;
+        const auto moved = motions_.find(node.mName.C_Str());
+        if (moved != motions_.end()) {
+            if (links.empty()) links.push_back({glm::dmat4(parent), nullptr});
+            links.push_back({glm::dmat4(1.0), moved->second});
+        } else if (!links.empty() && !links.back().motion) {
+            links.back().fixed = links.back().fixed * glm::dmat4(local);
+        } else if (!links.empty()) {
+            links.push_back({glm::dmat4(local), nullptr});
+        }
+        std::shared_ptr<const ObjectMotion> motion;
+        if (!links.empty() && node.mNumMeshes > 0) motion = std::make_shared<ObjectMotion>(ObjectMotion{links});
         for (unsigned i = 0; i < node.mNumMeshes; ++i) {
             const aiMesh& in = *scene_.mMeshes[node.mMeshes[i]];
             const MeshUse& mesh = meshes_[node.mMeshes[i]];
@@ -434,13 +450,14 @@ private:
             SceneObject o;
             o.mesh = mesh.mesh;
             o.model = world;
+            o.motion = motion;
             const MaterialUse& use = materials_[in.mMaterialIndex];
             o.material = use.material;
             o.cull = use.cull;
             o.primitive = mesh.primitive;
             model_.objects.push_back(std::move(o));
         }
-        for (unsigned i = 0; i < node.mNumChildren; ++i) place(*node.mChildren[i], world);
+        for (unsigned i = 0; i < node.mNumChildren; ++i) place(*node.mChildren[i], world, links);
     }
 
     // An assimp camera looks from mPosition along mLookAt with mUp, in its node's space;
@@ -509,7 +526,6 @@ private:
     }
 
     void note_ignored() {
-        if (scene_.mNumAnimations > 0) ignored_.insert("animations (drawn at rest)");
         if (scene_.mNumLights > 0 && !gltf()) ignored_.insert("the file's lights (a default rig is used)");
         for (const std::string& what : ignored_) model_.ignored.push_back(what);
     }
@@ -524,6 +540,7 @@ private:
     std::vector<MeshUse> meshes_;
     std::map<std::pair<std::string, ColorSpace>, std::shared_ptr<const Texture>> textures_;
     std::map<std::string, glm::mat4> world_;  // node name -> world transform (for cameras)
+    std::map<std::string, std::shared_ptr<const NodeMotion>> motions_;  // node name -> its animation
     std::set<std::string> ignored_;
 };
 

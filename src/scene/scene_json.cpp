@@ -10,6 +10,7 @@
 
 #include "io/read_file.h"
 #include "io/text_parse.h"
+#include "scene/animation_json.h"
 #include "scene/json_node.h"
 #include "softraster/error.h"
 #include "softraster/framebuffer.h"
@@ -137,8 +138,9 @@ struct Loader {
         if (n.has("exposure")) s.tone_mapping.exposure = float(n["exposure"].number_in(0, 1e6, true, false, "0 < exposure <= 1e6"));
     }
 
-    void read_camera(const Node& n, Camera& c) {
-        n.expect_object({"projection", "eye", "target", "up", "fov_y", "height", "near", "far"});
+    void read_camera(const Node& n, Scene& s) {
+        Camera& c = s.camera;
+        n.expect_object({"projection", "eye", "target", "up", "fov_y", "height", "near", "far"}, {"animation"}, version);
         if (n.has("projection"))
             c.orthographic = n["projection"].choice<bool>({{"perspective", false}, {"orthographic", true}});
         c.eye = n["eye"].vec3();
@@ -153,6 +155,7 @@ struct Loader {
         if (glm::length(view) == 0.0) n["target"].fail("eye and target are the same point");
         if (glm::length(glm::cross(glm::normalize(view), glm::normalize(glm::dvec3(c.up)))) < 1e-9)
             (n.has("up") ? n["up"] : n).fail("up is parallel to the view direction");
+        if (n.has("animation")) s.camera_motion = scene_json::read_camera_animation(n["animation"], c);
     }
 
     void read_lights(const Node& n, Lights& l) {
@@ -446,6 +449,13 @@ struct Loader {
         for (const SceneObject& part : slot->objects) {
             SceneObject placed = part;
             placed.model = o.model * part.model;
+            if (o.motion || part.motion) {  // the object's links, then the part's own
+                auto motion = std::make_shared<ObjectMotion>();
+                motion->links = o.motion ? o.motion->links : std::vector<MotionLink>{{glm::dmat4(o.model), nullptr}};
+                if (part.motion) motion->links.insert(motion->links.end(), part.motion->links.begin(), part.motion->links.end());
+                else motion->links.push_back({glm::dmat4(part.model), nullptr});
+                placed.motion = std::move(motion);
+            }
             if (shading && (part.primitive == Topology::Triangles)) placed.material.shading = *shading;
             if (n.has("cull")) placed.cull = o.cull;
             if (n.has("front_face")) placed.front_face = o.front_face;
@@ -456,7 +466,8 @@ struct Loader {
 
     void read_object(const Node& n, std::vector<SceneObject>& out) {
         n.expect_object({"mesh", "builtin", "transform", "material", "cull", "front_face"},
-                        {"depth", "stencil", "scissor", "primitive", "line_width", "point_size", "wireframe", "model"}, version);
+                        {"depth", "stencil", "scissor", "primitive", "line_width", "point_size", "wireframe", "model", "animation"},
+                        version);
         SceneObject o;
         if (int(n.has("mesh")) + int(n.has("builtin")) + int(n.has("model")) != 1)
             n.fail(version >= 2 ? "exactly one of 'mesh', 'builtin' and 'model' is required"
@@ -474,6 +485,7 @@ struct Loader {
             }
         }
         o.model = model_matrix(translate, rotate, scale);
+        if (n.has("animation")) o.motion = scene_json::read_object_animation(n["animation"], translate, rotate, scale);
         if (n.has("cull"))
             o.cull = n["cull"].choice<CullMode>({{"back", CullMode::Back}, {"front", CullMode::Front}, {"none", CullMode::None}});
         if (n.has("front_face")) o.front_face = n["front_face"].choice<FrontFace>({{"ccw", FrontFace::CCW}, {"cw", FrontFace::CW}});
@@ -532,7 +544,7 @@ Scene load_scene(const std::filesystem::path& path) {
     if (top.has("ambient_occlusion")) scene.ambient_occlusion = read_ambient_occlusion(top["ambient_occlusion"]);
     if (top.has("draw_order")) scene.sorted = top["draw_order"].choice<bool>({{"sorted", true}, {"file", false}});
     loader.read_image(top["image"], scene);
-    loader.read_camera(top["camera"], scene.camera);
+    loader.read_camera(top["camera"], scene);
     if (top.has("lights")) loader.read_lights(top["lights"], scene.lights);
     const Node objects = top["objects"];
     for (size_t i = 0; i < objects.array_size(); ++i) loader.read_object(objects.at(i), scene.objects);

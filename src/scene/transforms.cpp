@@ -9,13 +9,16 @@
 
 namespace softraster {
 
+glm::dmat4 rotate_euler(const glm::dmat4& m, const glm::dvec3& rotate_deg) {
+    const glm::dmat4 I(1.0);
+    const glm::dvec3 r = glm::radians(rotate_deg);
+    // Right-handed rotations: glm::rotate turns counter-clockwise looking down the axis.
+    return m * glm::rotate(I, r.z, glm::dvec3(0, 0, 1)) * glm::rotate(I, r.y, glm::dvec3(0, 1, 0)) * glm::rotate(I, r.x, glm::dvec3(1, 0, 0));
+}
+
 glm::mat4 model_matrix(const glm::vec3& translate, const glm::vec3& rotate_deg, const glm::vec3& scale) {
     const glm::dmat4 I(1.0);
-    const glm::dvec3 r = glm::radians(glm::dvec3(rotate_deg));
-    // Right-handed rotations: glm::rotate turns counter-clockwise looking down the axis.
-    const glm::dmat4 m = glm::translate(I, glm::dvec3(translate)) * glm::rotate(I, r.z, glm::dvec3(0, 0, 1)) *
-                         glm::rotate(I, r.y, glm::dvec3(0, 1, 0)) * glm::rotate(I, r.x, glm::dvec3(1, 0, 0)) *
-                         glm::scale(I, glm::dvec3(scale));
+    const glm::dmat4 m = rotate_euler(glm::translate(I, glm::dvec3(translate)), glm::dvec3(rotate_deg)) * glm::scale(I, glm::dvec3(scale));
     return glm::mat4(m);
 }
 

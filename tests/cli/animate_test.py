@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""animate_test.py SOFTRASTER WORKDIR: `softraster animate` and `render --turntable --time`.
+"""animate_test.py SOFTRASTER WORKDIR: `softraster animate` and `render --time [--turntable]`.
 
 Numbered PNG frames are exact: frame k is byte-identical to `render` at time k / fps. Videos
 and GIFs are read back with ffprobe (frame count, duration, codec) and a frame of the video
 extracted with ffmpeg is compared with `render` at its time (within the codec's loss). GIF
 frame delays and the loop block are read from the file itself. Bad outputs are refused
 before anything is rendered and leave no file."""
-import json, os, shutil, struct, subprocess, sys
+import base64, json, os, shutil, struct, subprocess, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, '..', 'tools'))
@@ -127,10 +127,63 @@ for args, what in [(['-o', 'spin.avi'], 'spin.avi'), (['-o', 'f/%d_%d.png'], '%d
     target = os.path.join(work, args[1])
     check('animate %s' % args, r.returncode == 2 and what in r.stderr and len(r.stderr.strip().splitlines()) == 1
           and not os.path.exists(target) and not os.path.exists(target + '.part'), '%d %r' % (r.returncode, r.stderr))
-r = run(['render', MODEL, '-o', 'nt.png', '--time', '1'])
-check('render --time needs --turntable', r.returncode == 2 and '--turntable' in r.stderr, r.stderr)
 r = run(['animate', 'missing.glb', '-o', 'm.gif'])
 check('animate missing model', r.returncode == 2 and 'missing.glb' in r.stderr and not os.path.exists(os.path.join(work, 'm.gif')), r.stderr)
+
+
+# Keyframes of a scene file: animate plays them to the last key (1.5 s at 10 fps: 15 frames),
+# each frame byte-identical to render --time, and things move.
+KEYS = {'version': 2, 'image': {'width': 48, 'height': 32},
+        'camera': {'eye': [0, 0, 4], 'target': [0, 0, 0],
+                   'animation': {'interpolation': 'smooth', 'keys': [{'time': 0, 'eye': [0, 0, 4]}, {'time': 1.5, 'eye': [1, 1, 4]}]}},
+        'lights': {'ambient': [0.2, 0.2, 0.2], 'directional': [{'direction': [0, 0, -1], 'color': [1, 1, 1]}]},
+        'objects': [{'builtin': {'type': 'cube'}, 'animation': {'keys': [
+            {'time': 0, 'translate': [-1, 0, 0], 'rotate': [0, 0, 0]},
+            {'time': 1, 'translate': [1, 0, 0], 'rotate': [0, 90, 0], 'scale': 0.5}]}}]}
+with open(os.path.join(work, 'keys.json'), 'w') as f:
+    json.dump(KEYS, f)
+r = run(['animate', 'keys.json', '-o', 'keys/%02d.png', '--fps', '10'])
+names = sorted(os.listdir(os.path.join(work, 'keys'))) if os.path.isdir(os.path.join(work, 'keys')) else []
+check('keyframes: 15 frames', r.returncode == 0 and names == ['%02d.png' % k for k in range(15)], (r.stderr, names))
+pictures = {}
+for k in (0, 4, 12):
+    r = run(['render', 'keys.json', '-o', 'keys_%d.png' % k, '--time', '%g' % (k / 10)])
+    with open(os.path.join(work, 'keys_%d.png' % k), 'rb') as a, open(os.path.join(work, 'keys', '%02d.png' % k), 'rb') as b:
+        pictures[k] = a.read()
+        check('keyframes: frame %d is render --time' % k, r.returncode == 0 and pictures[k] == b.read(), r.stderr)
+check('keyframes: the frames differ', len(set(pictures.values())) == 3)
+r = run(['render', 'keys.json', '-o', 'keys_default.png'])
+with open(os.path.join(work, 'keys_default.png'), 'rb') as a:
+    check('keyframes: render without --time is time 0', a.read() == pictures.get(0))
+
+
+# A glTF node animation (a triangle whose node moves along x over 2 s): animate plays it (no
+# turntable unless asked), frames equal render --time, and the triangle moves.
+def animated_gltf():
+    data = struct.pack('<9f', 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack('<2f', 0, 2) + struct.pack('<6f', 0, 0, 0, 3, 0, 0)
+    return {'asset': {'version': '2.0'}, 'scene': 0, 'scenes': [{'nodes': [0]}],
+            'nodes': [{'mesh': 0}], 'meshes': [{'primitives': [{'attributes': {'POSITION': 0}}]}],
+            'animations': [{'samplers': [{'input': 1, 'output': 2}], 'channels': [{'sampler': 0, 'target': {'node': 0, 'path': 'translation'}}]}],
+            'buffers': [{'byteLength': len(data), 'uri': 'data:application/octet-stream;base64,' + base64.b64encode(data).decode()}],
+            'bufferViews': [{'buffer': 0, 'byteOffset': 0, 'byteLength': 36}, {'buffer': 0, 'byteOffset': 36, 'byteLength': 8},
+                            {'buffer': 0, 'byteOffset': 44, 'byteLength': 24}],
+            'accessors': [{'bufferView': 0, 'componentType': 5126, 'count': 3, 'type': 'VEC3', 'min': [0, 0, 0], 'max': [1, 1, 0]},
+                          {'bufferView': 1, 'componentType': 5126, 'count': 2, 'type': 'SCALAR', 'min': [0], 'max': [2]},
+                          {'bufferView': 2, 'componentType': 5126, 'count': 2, 'type': 'VEC3'}]}
+
+
+with open(os.path.join(work, 'moving.gltf'), 'w') as f:
+    json.dump(animated_gltf(), f)
+r = run(['animate', 'moving.gltf', '-o', 'moving/%02d.png', '--fps', '5', '--size', '64x48', '--samples', '1'])
+names = sorted(os.listdir(os.path.join(work, 'moving'))) if os.path.isdir(os.path.join(work, 'moving')) else []
+check('glTF animation: 10 frames', r.returncode == 0 and names == ['%02d.png' % k for k in range(10)], (r.stderr, names))
+moving = {}
+for k in (0, 7):
+    r = run(['render', 'moving.gltf', '-o', 'moving_%d.png' % k, '--time', '%g' % (k / 5), '--size', '64x48', '--samples', '1'])
+    with open(os.path.join(work, 'moving_%d.png' % k), 'rb') as a, open(os.path.join(work, 'moving', '%02d.png' % k), 'rb') as b:
+        moving[k] = a.read()
+        check('glTF animation: frame %d is render --time' % k, r.returncode == 0 and moving[k] == b.read(), r.stderr)
+check('glTF animation: the triangle moves', moving.get(0) != moving.get(7))
 
 if failures:
     print('FAILED:\n  ' + '\n  '.join(failures))

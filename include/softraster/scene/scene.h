@@ -110,9 +110,14 @@ struct Camera {
     float near = 0.1f, far = 100.0f;
 };
 
+// Keyframes (animation.h, docs/scene-format.md "Animation").
+struct ObjectMotion;
+struct CameraMotion;
+
 struct SceneObject {
     std::shared_ptr<const Mesh> mesh;
     glm::mat4 model{1.0f};  // T * Rz * Ry * Rx * S
+    std::shared_ptr<const ObjectMotion> motion;  // version 2 or a model file's animation: model over time
     Material material;
     CullMode cull = CullMode::Back;
     FrontFace front_face = FrontFace::CCW;
@@ -140,11 +145,14 @@ struct Scene {
     // "Ambient occlusion").
     std::optional<AmbientOcclusionSettings> ambient_occlusion;
     Camera camera;
+    std::shared_ptr<const CameraMotion> camera_motion;  // version 2: the camera's eye and target over time
     Lights lights;
     std::vector<SceneObject> objects;
 };
 
-// Model matrix M = T * Rz(rz) * Ry(ry) * Rx(rx) * S, angles in degrees.
+// Model matrix M = T * Rz(rz) * Ry(ry) * Rx(rx) * S, angles in degrees, computed in double
+// precision from the left (rotate_euler gives ((m * Rz) * Ry) * Rx, for keyframes too).
+glm::dmat4 rotate_euler(const glm::dmat4& m, const glm::dvec3& rotate_deg);
 glm::mat4 model_matrix(const glm::vec3& translate, const glm::vec3& rotate_deg, const glm::vec3& scale);
 // gluLookAt and gluPerspective / glOrtho for the scene's camera and image aspect.
 glm::mat4 view_matrix(const Camera& c);
