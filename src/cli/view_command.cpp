@@ -19,6 +19,7 @@
 
 #include "cli/commands.h"
 #include "cli/model_options.h"
+#include "platform/terminal.h"
 #include "platform/window.h"
 #include "softraster/error.h"
 #include "softraster/io/image_write.h"
@@ -43,10 +44,12 @@ struct View {
     bool wireframe = false, depth = false, no_cull = false;
     std::optional<int> samples;
     int width = 0, height = 0;               // 0: the scene's size
+    double time = 0.0;                       // seconds into the keyframes, which play unless paused
+    bool paused = false;
 };
 
 Scene frame_scene(const Scene& loaded, const View& v) {
-    Scene s = turned_scene(loaded, v.azimuth);
+    Scene s = turned_scene(scene_at(loaded, v.time), v.azimuth);
     if (v.width > 0) s.width = v.width, s.height = v.height;
     if (v.samples) s.samples = *v.samples;
     Camera& c = s.camera;
@@ -77,11 +80,12 @@ Scene frame_scene(const Scene& loaded, const View& v) {
     return s;
 }
 
-std::string status_line(const Scene& s, const View& v, double ms, size_t triangles) {
-    char text[512];
-    std::snprintf(text, sizeof text, "%.1f ms  %.0f fps  %zu tris  %dx%d  %s%s  msaa %dx  cull %s  filter %s%s", ms, ms > 0 ? 1000.0 / ms : 0.0, triangles, s.width, s.height, v.depth ? "depth" : (v.shading >= 0 ? kShadingNames[v.shading] : "file's shading"),
-                  "", s.samples, v.no_cull ? "none" : "file", v.filter >= 0 ? kFilterNames[v.filter] : "file",
-                  v.wireframe ? "  wireframe" : "");
+std::string status_line(const Scene& s, const View& v, double ms, size_t triangles, bool animated) {
+    char text[512], clock[64] = "";
+    if (animated) std::snprintf(clock, sizeof clock, "  t %.2f s%s", v.time, v.paused ? " (paused)" : "");
+    std::snprintf(text, sizeof text, "%.1f ms  %.0f fps  %zu tris  %dx%d  %s  msaa %dx  cull %s  filter %s%s%s", ms, ms > 0 ? 1000.0 / ms : 0.0,
+                  triangles, s.width, s.height, v.depth ? "depth" : (v.shading >= 0 ? kShadingNames[v.shading] : "file's shading"), s.samples,
+                  v.no_cull ? "none" : "file", v.filter >= 0 ? kFilterNames[v.filter] : "file", v.wireframe ? "  wireframe" : "", clock);
     return text;
 }
 
@@ -91,98 +95,137 @@ std::filesystem::file_time_type modified(const std::filesystem::path& p) {
     return ec ? std::filesystem::file_time_type{} : t;
 }
 
+struct ViewOptions {
+    std::string input, screenshots = ".";
+    int threads = 0, orbit_frames = 0;
+    bool terminal = false;
+    ModelOptions model;
+};
+
+// The viewer's loop, on a window (platform/window.h) or the terminal (platform/terminal.h).
+template <class Display>
+int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::App& cmd) {
+    const std::filesystem::path path = options.input;
+    auto stamp = modified(path);
+    View view;
+    Image front, back;  // the display shows front; the next frame is drawn into back
+    std::string error, status;
+    int screenshot = 0;
+    bool dirty = true, quit = false;
+    auto draw = [&] {
+        const Scene scene = frame_scene(loaded, view);
+        const SceneRenderer renderer(scene, thread_count(options.threads));
+        const auto start = std::chrono::steady_clock::now();
+        back = renderer.render();
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        std::swap(front, back);  // the frame is complete: it becomes the one shown
+        status = status_line(scene, view, ms, renderer.triangle_count(), animation_length(loaded) > 0.0);
+        display.present(front, status, error);
+        dirty = false;
+    };
+    auto last_frame = std::chrono::steady_clock::now();
+    const auto first_frame = last_frame;
+    int frames = 0;
+    while (!quit) {
+        if (options.orbit_frames > 0) {  // the measured orbit: every frame turned a step further
+            if (frames == options.orbit_frames) {
+                const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - first_frame).count();
+                std::printf("%d frames in %.3f s: %.2f frames/s\n", frames, s, frames / s);
+                break;
+            }
+            view.azimuth = 360.0 * frames / options.orbit_frames;
+            dirty = true;
+        }
+        // Keyframes play in real time, looping (the length measured again after a reload).
+        const auto now = std::chrono::steady_clock::now();
+        const double length = animation_length(loaded);
+        if (length > 0.0 && !view.paused) {
+            view.time = std::fmod(view.time + std::chrono::duration<double>(now - last_frame).count(), length);
+            dirty = true;
+        }
+        last_frame = now;
+        if (dirty) draw(), ++frames;
+        for (const platform::InputEvent& e : display.events((length > 0.0 && !view.paused) || options.orbit_frames > 0 ? 0 : 250)) {
+            using Kind = platform::InputEvent::Kind;
+            if (e.kind != Kind::Key || (e.key != 'p' && e.key != platform::kKeyF12)) dirty = true;
+            if (e.kind == Kind::Quit) quit = true;
+            if (e.kind == Kind::Resize) view.width = e.width, view.height = e.height;
+            if (e.kind == Kind::Wheel) view.zoom *= std::pow(1.1f, e.dy);
+            if (e.kind == Kind::Drag && e.button == 1) {
+                view.azimuth += 0.5 * e.dx;
+                view.elevation = std::clamp(view.elevation + 0.5 * e.dy, -85.0, 85.0);
+            }
+            if (e.kind == Kind::Drag && e.button == 3) view.pan += glm::vec2(-e.dx, e.dy) * 0.002f;
+            if (e.kind != Kind::Key) continue;
+            switch (e.key) {
+                case platform::kKeyLeft: view.azimuth -= kKeyStep; break;
+                case platform::kKeyRight: view.azimuth += kKeyStep; break;
+                case platform::kKeyUp: view.elevation = std::min(view.elevation + kKeyStep, 85.0); break;
+                case platform::kKeyDown: view.elevation = std::max(view.elevation - kKeyStep, -85.0); break;
+                case 'r': view.azimuth = view.elevation = 0.0, view.zoom = 1.0f, view.pan = glm::vec2(0.0f); break;
+                case 's': view.shading = (view.shading + 1) % int(std::size(kShadings)); break;
+                case 'w': view.wireframe = !view.wireframe; break;
+                case 'm': view.samples = view.samples.value_or(loaded.samples) > 1 ? 1 : 4; break;
+                case 'c': view.no_cull = !view.no_cull; break;
+                case 'd': view.depth = !view.depth; break;
+                case 'f': view.filter = view.filter == 2 ? -1 : view.filter + 1; break;
+                case ' ': view.paused = !view.paused; break;
+                case 'q':
+                case platform::kKeyEscape: quit = true; break;
+                case 'p':
+                case platform::kKeyF12: {
+                    if (dirty) draw();  // the frame of every input before this key
+                    char name[64];
+                    std::snprintf(name, sizeof name, "softraster-view-%03d.png", screenshot++);
+                    const std::filesystem::path shot = std::filesystem::path(options.screenshots) / name;
+                    write_picture(front, shot, loaded.color_space);  // the exact frame shown, without the status line
+                    std::fprintf(stderr, "wrote %s (%dx%d)\n", shot.string().c_str(), front.width, front.height);
+                    break;
+                }
+                default: break;
+            }
+        }
+        if (const auto changed = modified(path); changed != stamp) {  // reload; keep the last good scene on an error
+            stamp = changed;
+            try {
+                loaded = input_scene(path, options.model, cmd);
+                error.clear();
+            } catch (const InputError& e) {
+                error = e.what();
+            }
+            dirty = true;
+        }
+    }
+    return 0;
+}
+
 }  // namespace
 
 Run add_view_command(CLI::App& app) {
-    struct Options {
-        std::string input, screenshots = ".";
-        int threads = 0;
-        ModelOptions model;
-    };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<ViewOptions>();
     CLI::App* cmd = app.add_subcommand("view", "Show a scene or model file in a window: turn it around, change the settings live");
     cmd->add_option("input", opt->input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
     cmd->add_option("--screenshots", opt->screenshots, "Folder the screenshot key (p or F12) writes softraster-view-NNN.png into")
         ->capture_default_str();
+    cmd->add_option("--orbit-frames", opt->orbit_frames,
+                    "Turn the objects once around in N frames as fast as they draw, print the frame rate and quit (compare 'bench --orbit')")
+        ->check(CLI::Range(1, 100000));
+    cmd->add_flag("--terminal", opt->terminal, "Draw in this terminal (24-bit color half blocks) instead of a window: the keys work the same");
     add_threads_option(*cmd, opt->threads);
     add_model_options(*cmd, opt->model, 512);
     cmd->footer("Mouse: drag to turn, right-drag to pan, wheel to zoom. Keys: arrows turn and tilt by 15 degrees, r reset,\n"
-                "s shading, w wireframe, m MSAA, c culling, d depth picture, f texture filter, p or F12 screenshot, q or Esc quit.\n"
+                "s shading, w wireframe, m MSAA, c culling, d depth picture, f texture filter, space pause the keyframes,\n"
+                "p or F12 screenshot, q or Esc quit.\n"
                 "The file reloads when it changes; an error in it is shown and the last good version stays.");
     return [opt, cmd] {
         const std::filesystem::path path = opt->input;
         Scene loaded = input_scene(path, opt->model, *cmd);
-        auto stamp = modified(path);
-        View view;
-        platform::Window window("softraster view: " + path.filename().string(), loaded.width, loaded.height);
-        Image front, back;  // the window shows front; the next frame is drawn into back
-        std::string error, status;
-        int screenshot = 0;
-        bool dirty = true, quit = false;
-        auto draw = [&] {
-            const Scene scene = frame_scene(loaded, view);
-            const SceneRenderer renderer(scene, thread_count(opt->threads));
-            const auto start = std::chrono::steady_clock::now();
-            back = renderer.render();
-            const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            std::swap(front, back);  // the frame is complete: it becomes the one shown
-            status = status_line(scene, view, ms, renderer.triangle_count());
-            window.present(front, status, error);
-            dirty = false;
-        };
-        while (!quit) {
-            if (dirty) draw();
-            for (const platform::InputEvent& e : window.events(250)) {
-                using Kind = platform::InputEvent::Kind;
-                if (e.kind != Kind::Key || (e.key != 'p' && e.key != platform::kKeyF12)) dirty = true;
-                if (e.kind == Kind::Quit) quit = true;
-                if (e.kind == Kind::Resize) view.width = e.width, view.height = e.height;
-                if (e.kind == Kind::Wheel) view.zoom *= std::pow(1.1f, e.dy);
-                if (e.kind == Kind::Drag && e.button == 1) {
-                    view.azimuth += 0.5 * e.dx;
-                    view.elevation = std::clamp(view.elevation + 0.5 * e.dy, -85.0, 85.0);
-                }
-                if (e.kind == Kind::Drag && e.button == 3) view.pan += glm::vec2(-e.dx, e.dy) * 0.002f;
-                if (e.kind != Kind::Key) continue;
-                switch (e.key) {
-                    case platform::kKeyLeft: view.azimuth -= kKeyStep; break;
-                    case platform::kKeyRight: view.azimuth += kKeyStep; break;
-                    case platform::kKeyUp: view.elevation = std::min(view.elevation + kKeyStep, 85.0); break;
-                    case platform::kKeyDown: view.elevation = std::max(view.elevation - kKeyStep, -85.0); break;
-                    case 'r': view.azimuth = view.elevation = 0.0, view.zoom = 1.0f, view.pan = glm::vec2(0.0f); break;
-                    case 's': view.shading = (view.shading + 1) % int(std::size(kShadings)); break;
-                    case 'w': view.wireframe = !view.wireframe; break;
-                    case 'm': view.samples = view.samples.value_or(loaded.samples) > 1 ? 1 : 4; break;
-                    case 'c': view.no_cull = !view.no_cull; break;
-                    case 'd': view.depth = !view.depth; break;
-                    case 'f': view.filter = view.filter == 2 ? -1 : view.filter + 1; break;
-                    case 'q':
-                    case platform::kKeyEscape: quit = true; break;
-                    case 'p':
-                    case platform::kKeyF12: {
-                        if (dirty) draw();  // the frame of every input before this key
-                        char name[64];
-                        std::snprintf(name, sizeof name, "softraster-view-%03d.png", screenshot++);
-                        const std::filesystem::path shot = std::filesystem::path(opt->screenshots) / name;
-                        write_picture(front, shot, loaded.color_space);  // the exact frame shown, without the status line
-                        std::fprintf(stderr, "wrote %s (%dx%d)\n", shot.string().c_str(), front.width, front.height);
-                        break;
-                    }
-                    default: break;
-                }
-            }
-            if (const auto now = modified(path); now != stamp) {  // reload; keep the last good scene on an error
-                stamp = now;
-                try {
-                    loaded = input_scene(path, opt->model, *cmd);
-                    error.clear();
-                } catch (const InputError& e) {
-                    error = e.what();
-                }
-                dirty = true;
-            }
+        if (opt->terminal) {
+            platform::Terminal terminal;
+            return run_view(terminal, std::move(loaded), *opt, *cmd);
         }
-        return 0;
+        platform::Window window("softraster view: " + path.filename().string(), loaded.width, loaded.height);
+        return run_view(window, std::move(loaded), *opt, *cmd);
     };
 }
 

@@ -1,4 +1,4 @@
-#include "cli/terminal_picture.h"
+#include "platform/terminal_picture.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -7,7 +7,7 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 
-namespace softraster::cli {
+namespace softraster::platform {
 
 TerminalSize terminal_size() {
     TerminalSize size;
@@ -47,4 +47,4 @@ void print_terminal_picture(const Image& picture, TerminalSize cells, std::FILE*
     chafa_symbol_map_unref(symbols);
 }
 
-}  // namespace softraster::cli
+}  // namespace softraster::platform

@@ -6,7 +6,7 @@
 
 #include "softraster/image.h"
 
-namespace softraster::cli {
+namespace softraster::platform {
 
 // The terminal's size in character cells: stdout's window size, else $COLUMNS x $LINES,
 // else 80 x 24.
@@ -19,4 +19,4 @@ TerminalSize terminal_size();
 // keeping its aspect ratio (a cell twice as tall as wide), then resets the colors.
 void print_terminal_picture(const Image& picture, TerminalSize cells, std::FILE* out);
 
-}  // namespace softraster::cli
+}  // namespace softraster::platform

@@ -34,7 +34,7 @@ Window::Window(const std::string& title, int width, int height) : impl_(std::mak
     SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
     if (!display || SDL_Init(SDL_INIT_VIDEO) != 0)
         throw InputError(std::string("no display to open a window on (") + (display ? SDL_GetError() : "DISPLAY is not set") +
-                         "): try 'softraster render --terminal' or 'softraster animate'");
+                         "): try 'softraster view --terminal' or 'softraster animate'");
     impl_->window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height + kStatusHeight,
                                      SDL_WINDOW_RESIZABLE);
     if (!impl_->window) throw InputError(std::string("cannot open a window: ") + SDL_GetError());
@@ -85,14 +85,14 @@ void Window::present(const Image& frame, const std::string& status, const std::s
 std::vector<InputEvent> Window::events(int wait_ms) {
     std::vector<InputEvent> out;
     SDL_Event e;
-    bool have = SDL_WaitEventTimeout(&e, wait_ms) != 0;
+    bool have = (wait_ms > 0 ? SDL_WaitEventTimeout(&e, wait_ms) : SDL_PollEvent(&e)) != 0;
     while (have) {
         switch (e.type) {
             case SDL_QUIT: out.push_back({InputEvent::Kind::Quit}); break;
             case SDL_KEYDOWN: {
                 const SDL_Keycode k = e.key.keysym.sym;
                 int key = 0;
-                if ((k >= 'a' && k <= 'z') || (k >= '0' && k <= '9')) key = int(k);
+                if ((k >= 'a' && k <= 'z') || (k >= '0' && k <= '9') || k == ' ') key = int(k);
                 else if (k == SDLK_LEFT) key = kKeyLeft;
                 else if (k == SDLK_RIGHT) key = kKeyRight;
                 else if (k == SDLK_UP) key = kKeyUp;

@@ -13,7 +13,7 @@ namespace softraster::platform {
 
 struct InputEvent {
     enum class Kind { Quit, Key, Drag, Wheel, Resize } kind;
-    int key = 0;               // Key: a lowercase letter or digit, or one of the codes below
+    int key = 0;               // Key: a lowercase letter, a digit or ' ', or one of the codes below
     int button = 0;            // Drag: 1 left, 2 middle, 3 right
     float dx = 0, dy = 0;      // Drag: pixels moved; Wheel: steps (dy > 0 away from the user)
     int width = 0, height = 0; // Resize: the new size of the drawing area

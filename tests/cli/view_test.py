@@ -7,7 +7,7 @@ by 30 degrees (render --turntable 24 --time 2), `s` switches pbr to lambert. The
 survives a broken scene file (the last good scene stays, and the mended file is drawn with
 the view kept) and a resize. Without a display: one line, exit 2. (One window for all of
 it: a second window in the same virtual display sometimes went unfound under load.)"""
-import json, os, shutil, subprocess, sys, time
+import json, re, os, shutil, subprocess, sys, time
 
 exe, work = sys.argv[1:3]
 shutil.rmtree(work, ignore_errors=True)
@@ -152,6 +152,10 @@ try:
         except subprocess.TimeoutExpired:
             check('q quits', False)
     view.kill()
+    # The measured orbit (docs/performance.md): it draws its frames and quits by itself.
+    r = subprocess.run([exe, 'view', scene, '--orbit-frames', '12'], env=xenv, capture_output=True, text=True, timeout=120)
+    check('--orbit-frames prints the rate and quits', r.returncode == 0 and re.fullmatch(r'12 frames in [0-9.]+ s: [0-9.]+ frames/s\n', r.stdout),
+          (r.returncode, r.stdout, r.stderr[-300:]))
 finally:
     xvfb.terminate()  # (SIGTERM: the server removes its lock file)
     xvfb.wait()
