@@ -1,4 +1,10 @@
 #include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <thread>
+#include <vector>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -13,6 +19,76 @@
 #include "softraster/scene/scene_renderer.h"
 
 namespace softraster::cli {
+namespace {
+
+// Draws frames 0 .. count-1 with `render(k, threads)` and hands them to `write(k, picture)`
+// in order. With T threads, T frames are drawn at once on one thread each: a frame's own
+// threads wait at its serial parts (setup, binning, the resolve), frames do not wait for
+// each other, and the writer (an encoder) runs beside them. At most 2T frames are held. A
+// frame is the same picture at any thread count, so the output does not depend on T.
+template <class Render, class Write>
+void render_in_order(long count, unsigned threads, Render render, Write write) {
+    const long lanes = std::min<long>(threads, count);
+    if (lanes <= 1) {
+        for (long k = 0; k < count; ++k) write(k, render(k, threads));
+        return;
+    }
+    std::mutex mutex;
+    std::condition_variable changed;
+    std::map<long, Image> done;
+    long next = 0, written = 0;
+    std::exception_ptr failure;
+    auto worker = [&] {
+        for (;;) {
+            long k;
+            {
+                std::unique_lock lock(mutex);
+                changed.wait(lock, [&] { return failure || next >= count || next < written + 2 * lanes; });
+                if (failure || next >= count) return;
+                k = next++;
+            }
+            try {
+                Image picture = render(k, 1);
+                const std::lock_guard lock(mutex);
+                done.emplace(k, std::move(picture));
+            } catch (...) {
+                const std::lock_guard lock(mutex);
+                if (!failure) failure = std::current_exception();
+            }
+            changed.notify_all();
+        }
+    };
+    std::vector<std::jthread> pool;
+    for (long i = 0; i < lanes; ++i) pool.emplace_back(worker);
+    try {
+        for (long k = 0; k < count; ++k) {
+            Image picture;
+            {
+                std::unique_lock lock(mutex);
+                changed.wait(lock, [&] { return failure || done.count(k) > 0; });
+                if (failure) std::rethrow_exception(failure);
+                picture = std::move(done.at(k));
+                done.erase(k);
+            }
+            write(k, picture);
+            {
+                const std::lock_guard lock(mutex);
+                written = k + 1;
+            }
+            changed.notify_all();
+        }
+    } catch (...) {
+        {
+            const std::lock_guard lock(mutex);
+            if (!failure) failure = std::current_exception();
+        }
+        changed.notify_all();
+        pool.clear();  // (the workers see the failure and stop)
+        throw;
+    }
+}
+
+}  // namespace
 
 Run add_animate_command(CLI::App& app) {
     struct Options {
@@ -52,13 +128,13 @@ Run add_animate_command(CLI::App& app) {
         const auto start = std::chrono::steady_clock::now();
         std::unique_ptr<AnimationWriter> writer;
         Progress progress{size_t(frames), "frames"};
-        for (long k = 0; k < frames; ++k) {
-            const Scene frame = frame_at(scene, double(k) / opt->fps, turntable);
-            const Image picture = SceneRenderer(frame, thread_count(opt->threads)).render();
+        render_in_order(frames, thread_count(opt->threads), [&](long k, unsigned threads) {
+            return SceneRenderer(frame_at(scene, double(k) / opt->fps, turntable), threads).render();
+        }, [&](long k, const Image& picture) {
             if (!writer) writer = open_animation(out, picture.width, picture.height, opt->fps, scene.color_space);
             writer->add(picture);
             progress.update(size_t(k + 1), "");
-        }
+        });
         writer->finish();
         progress.clear();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,4 +1,6 @@
 // softraster: render 3D scenes on the CPU.
+#include <malloc.h>
+
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -8,6 +10,12 @@
 
 int main(int argc, char** argv) {
     using namespace softraster;
+    // Commands that draw many frames (animate, view, thumbnails, bench --orbit) set each one
+    // up anew, and a frame's buffers are large: glibc would hand them back to the kernel
+    // (mmap/munmap) and take them again, zeroed page by page. Keeping them in the heap lets the
+    // next frame reuse the memory (docs/performance.md, "Frames in a row").
+    mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
     CLI::App app{"softraster: a CPU rasterizer that renders scene files (format versions 1 and 2) and model files (glTF, OBJ, FBX, STL...) to pictures"};
     app.set_version_flag("--version", "softraster " SOFTRASTER_VERSION);
     app.require_subcommand(1);

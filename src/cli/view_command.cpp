@@ -112,11 +112,17 @@ int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::Ap
     std::string error, status;
     int screenshot = 0;
     bool dirty = true, quit = false;
+    std::optional<Framebuffer> fb;  // kept from frame to frame while its size and format stay
     auto draw = [&] {
         const Scene scene = frame_scene(loaded, view);
         const SceneRenderer renderer(scene, thread_count(options.threads));
         const auto start = std::chrono::steady_clock::now();
-        back = renderer.render();
+        if (fb && (fb->width() != scene.width * scene.supersample || fb->height() != scene.height * scene.supersample ||
+                   fb->samples() != scene.samples || fb->color_space() != scene.color_space))
+            fb.reset();
+        if (!fb) fb.emplace(renderer.make_framebuffer());
+        renderer.render(*fb);
+        back = renderer.resolve(*fb);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::swap(front, back);  // the frame is complete: it becomes the one shown
         status = status_line(scene, view, ms, renderer.triangle_count(), animation_length(loaded) > 0.0);

@@ -247,7 +247,9 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     LightSet lights = light_set(scene.lights, positional_lights_);
     // Shadows: directional lights first, then spot lights, each with its pass.
     static_assert(Lights::kMaxShadowed == size_t(kMaxShadowedLights));
-    const Bounds bounds = shadow_bounds(scene);
+    // (The bounds walk every vertex: only scenes with a shadow pay for them.)
+    std::optional<Bounds> scene_bounds;
+    auto bounds = [&]() -> const Bounds& { return scene_bounds ? *scene_bounds : scene_bounds.emplace(shadow_bounds(scene)); };
     auto add_shadow = [&](const ShadowSettings& s, const glm::mat4& matrix, const glm::vec3& travel) {
         shadow_passes_.push_back(std::make_unique<ShadowPass>(scene, s, matrix, travel));
         lights.shadows[size_t(lights.shadow_count)] = &shadow_passes_.back()->map;
@@ -255,10 +257,10 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     };
     for (size_t i = 0; i < scene.lights.directional.size() && i < size_t(LightSet::kMax); ++i)
         if (const DirectionalLight& l = scene.lights.directional[i]; l.shadow)
-            lights.shadow_of[i] = add_shadow(*l.shadow, shadow_matrix(l, bounds), l.direction);
+            lights.shadow_of[i] = add_shadow(*l.shadow, shadow_matrix(l, bounds()), l.direction);
     for (size_t i = 0; i < scene.lights.punctual.size(); ++i)
         if (const PunctualLight& l = scene.lights.punctual[i]; l.shadow && l.spot)
-            positional_lights_[i].shadow = add_shadow(*l.shadow, shadow_matrix(l, bounds), l.direction);
+            positional_lights_[i].shadow = add_shadow(*l.shadow, shadow_matrix(l, bounds()), l.direction);
     if (scene.ambient_occlusion) {
         const int k = scene.supersample;
         occlusion_ = std::make_unique<OcclusionPass>(OcclusionPass{
