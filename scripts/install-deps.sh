@@ -13,8 +13,8 @@ if [ "${1:-}" = "--tests" ]; then
   # GoogleTest and Google Benchmark for the suite; OSMesa (Mesa llvmpipe) is the test-only reference;
   # assimp-testmodels: the corpus of real model files the thumbnails test renders.
   # ffmpeg: ffprobe and ffmpeg read the animations back; tmux shows the terminal preview;
-  # Xvfb and xdotool run the viewer's window and type into it.
-  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels ffmpeg tmux xvfb xauth xdotool)
+  # Xvfb and xdotool run the viewer's window and type into it; xwd (x11-apps) reads it back.
+  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels ffmpeg tmux xvfb xauth xdotool x11-apps)
 fi
 missing=()
 for p in "${pkgs[@]}"; do

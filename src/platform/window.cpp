@@ -17,9 +17,6 @@ const char* const kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  //
 
 struct Window::Impl {
     SDL_Window* window = nullptr;
-    SDL_Renderer* renderer = nullptr;
-    SDL_Texture* texture = nullptr;
-    int texture_w = 0, texture_h = 0;
     TTF_Font* font = nullptr;
     bool dragging[4] = {false, false, false, false};
 };
@@ -28,9 +25,8 @@ Window::Window(const std::string& title, int width, int height) : impl_(std::mak
     // Without X11 or Wayland (an SSH session, a server) SDL would try the console's own
     // devices; say so instead, unless SDL_VIDEODRIVER asks for one.
     const bool display = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY") || std::getenv("SDL_VIDEODRIVER");
-    // The pictures are finished pixels: SDL's software renderer copies them to the window,
-    // with no OpenGL (which would start a GL driver and its threads beside ours).
-    SDL_SetHint(SDL_HINT_RENDER_DRIVER, "software");
+    // The pictures are finished pixels, copied straight into the window's own surface, with
+    // no OpenGL (which would start a GL driver and its threads beside ours).
     SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
     if (!display || SDL_Init(SDL_INIT_VIDEO) != 0)
         throw InputError(std::string("no display to open a window on (") + (display ? SDL_GetError() : "DISPLAY is not set") +
@@ -38,48 +34,43 @@ Window::Window(const std::string& title, int width, int height) : impl_(std::mak
     impl_->window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height + kStatusHeight,
                                      SDL_WINDOW_RESIZABLE);
     if (!impl_->window) throw InputError(std::string("cannot open a window: ") + SDL_GetError());
-    impl_->renderer = SDL_CreateRenderer(impl_->window, -1, SDL_RENDERER_SOFTWARE);
-    if (!impl_->renderer) throw std::runtime_error(std::string("SDL renderer: ") + SDL_GetError());
     if (TTF_Init() == 0) impl_->font = TTF_OpenFont(kFont, 13);
 }
 
 Window::~Window() {
     if (impl_->font) TTF_CloseFont(impl_->font);
     TTF_Quit();
-    if (impl_->texture) SDL_DestroyTexture(impl_->texture);
-    if (impl_->renderer) SDL_DestroyRenderer(impl_->renderer);
     if (impl_->window) SDL_DestroyWindow(impl_->window);
     SDL_Quit();
 }
 
 void Window::present(const Image& frame, const std::string& status, const std::string& error) {
     Impl& w = *impl_;
-    if (!w.texture || w.texture_w != frame.width || w.texture_h != frame.height) {
-        if (w.texture) SDL_DestroyTexture(w.texture);
-        // RGBA bytes in memory order: ABGR8888 on a little-endian machine.
-        w.texture = SDL_CreateTexture(w.renderer, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, frame.width, frame.height);
-        w.texture_w = frame.width, w.texture_h = frame.height;
+    SDL_Surface* surface = SDL_GetWindowSurface(w.window);  // (a new one after a resize)
+    if (!surface) return;
+    const SDL_Rect picture{0, 0, surface->w, std::max(1, surface->h - kStatusHeight)};
+    const SDL_Rect bar{0, picture.h, surface->w, surface->h - picture.h};
+    SDL_FillRect(surface, &bar, SDL_MapRGB(surface->format, 24, 24, 28));
+    if (frame.width == picture.w && frame.height == picture.h && !SDL_MUSTLOCK(surface)) {
+        // One pass from our RGBA bytes to the window's pixel format (the usual case).
+        SDL_ConvertPixels(frame.width, frame.height, SDL_PIXELFORMAT_RGBA32, frame.pixels.data(), frame.width * 4,
+                          surface->format->format, surface->pixels, surface->pitch);
+    } else if (SDL_Surface* in = SDL_CreateRGBSurfaceWithFormatFrom(const_cast<Rgba8*>(frame.pixels.data()), frame.width, frame.height,
+                                                                     32, frame.width * 4, SDL_PIXELFORMAT_RGBA32)) {
+        SDL_Rect to = picture;  // the window was resized and this frame is of the old size: scaled
+        SDL_BlitScaled(in, nullptr, surface, &to);
+        SDL_FreeSurface(in);
     }
-    SDL_UpdateTexture(w.texture, nullptr, frame.pixels.data(), frame.width * 4);
-    int win_w = 0, win_h = 0;
-    SDL_GetRendererOutputSize(w.renderer, &win_w, &win_h);
-    SDL_SetRenderDrawColor(w.renderer, 24, 24, 28, 255);
-    SDL_RenderClear(w.renderer);
-    const SDL_Rect picture{0, 0, win_w, std::max(1, win_h - kStatusHeight)};
-    SDL_RenderCopy(w.renderer, w.texture, nullptr, &picture);
     const std::string& line = error.empty() ? status : error;
     if (w.font && !line.empty()) {
         const SDL_Color color = error.empty() ? SDL_Color{230, 230, 230, 255} : SDL_Color{255, 90, 80, 255};
         if (SDL_Surface* text = TTF_RenderUTF8_Blended(w.font, line.c_str(), color)) {
-            if (SDL_Texture* t = SDL_CreateTextureFromSurface(w.renderer, text)) {
-                const SDL_Rect at{6, win_h - kStatusHeight + (kStatusHeight - text->h) / 2, text->w, text->h};
-                SDL_RenderCopy(w.renderer, t, nullptr, &at);
-                SDL_DestroyTexture(t);
-            }
+            SDL_Rect at{6, bar.y + (kStatusHeight - text->h) / 2, text->w, text->h};
+            SDL_BlitSurface(text, nullptr, surface, &at);
             SDL_FreeSurface(text);
         }
     }
-    SDL_RenderPresent(w.renderer);
+    SDL_UpdateWindowSurface(w.window);
 }
 
 std::vector<InputEvent> Window::events(int wait_ms) {

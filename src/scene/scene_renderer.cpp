@@ -385,6 +385,7 @@ Image SceneRenderer::resolve(const Framebuffer& fb) const {
             picture, ambient_occlusion(depth.depth_data(), depth.width(), depth.height(), occlusion_->projection, occlusion_->settings, pool_.get()),
             scene_.color_space);
     }
+    if (scene_.supersample == 1) return picture;  // (not a copy of a whole picture)
     return downsample_box(picture, scene_.supersample, scene_.color_space);
 }
 

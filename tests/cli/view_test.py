@@ -5,14 +5,18 @@ Keys are sent with xdotool; the screenshot key writes the exact frame shown, whi
 byte-identical to `render` of the same view: two presses of the right arrow turn the scene
 by 30 degrees (render --turntable 24 --time 2), `s` switches pbr to lambert. The window
 survives a broken scene file (the last good scene stays, and the mended file is drawn with
-the view kept) and a resize. Without a display: one line, exit 2. (One window for all of
+the view kept) and a resize. What the window shows, read back from the X server with xwd,
+is that frame pixel for pixel above a status line of light text. Without a display: one
+line, exit 2. (One window for all of
 it: a second window in the same virtual display sometimes went unfound under load.)"""
-import json, re, os, shutil, subprocess, sys, time
+import json, re, os, shutil, struct, subprocess, sys, time
 
 exe, work = sys.argv[1:3]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, '..', 'tools'))
+import imgdiff  # noqa: E402
 failures = []
 
 
@@ -87,6 +91,27 @@ def start_view(input_path, shots, *args):
     return p, None
 
 
+def window_pixels(window):
+    """The window's content as the X server holds it (xwd's dump): width, height, rows of (r, g, b)."""
+    data = subprocess.run(['xwd', '-id', window, '-silent'], capture_output=True, timeout=30, env=xenv).stdout
+    if len(data) < 100:
+        return 0, 0, []
+    f = struct.unpack('>25I', data[:100])
+    header, width, height, byte_order, bpp, line = f[0], f[4], f[5], f[7], f[11], f[12]
+    masks, ncolors = f[14:17], f[19]
+    at = header + 12 * ncolors
+    if bpp != 32:
+        return 0, 0, []
+    rows = []
+    for y in range(height):
+        row = []
+        for x in range(width):
+            v = struct.unpack('<I' if byte_order == 0 else '>I', data[at + y * line + 4 * x:at + y * line + 4 * x + 4])[0]
+            row.append(tuple((v & m) >> (m & -m).bit_length() - 1 for m in masks))
+        rows.append(row)
+    return width, height, rows
+
+
 def screenshot(window, shots, n, *keys):
     path = os.path.join(shots, 'softraster-view-%03d.png' % n)
     xdotool('key', '--window', window, *(list(keys) + ['p']))
@@ -121,6 +146,13 @@ try:
         turned = screenshot(window, shots, 0, 'Right', 'Right')
         render(os.path.join(work, 'turned.png'), scene, '--turntable', '24', '--time', '2')
         check('two right arrows = render --turntable 24 --time 2', same(turned, os.path.join(work, 'turned.png')))
+        # The window shows that frame, and below it the status line in DejaVu Sans.
+        w, h, shown = window_pixels(window)
+        pw, ph, ch, pix = imgdiff.read_png(turned)
+        frame = [[tuple(pix[(y * pw + x) * ch:(y * pw + x) * ch + 3]) for x in range(pw)] for y in range(ph)]
+        check('the window shows the frame', w == pw and h > ph and [r[:pw] for r in shown[:ph]] == frame, (w, h, pw, ph))
+        text = sum(1 for r in shown[ph:] for p in r if min(p) > 150)
+        check('the status line has text', text > 100, text)
         lambert = screenshot(window, shots, 1, 's')
         write_scene(os.path.join(work, 'lambert.json'), [0, 0, 0.4, 1], 'lambert')
         render(os.path.join(work, 'lambert.png'), os.path.join(work, 'lambert.json'), '--turntable', '24', '--time', '2')
