@@ -39,12 +39,14 @@ struct PixelShader {
 };
 
 // Which pixels the pipeline covers (true) when it draws `positions` as `topology` (one
-// sample per pixel, no culling, no depth test): row-major, width x height.
-inline std::vector<bool> pipeline_coverage(int width, int height, softraster::Topology topology, std::span<const PixelVertex> positions) {
+// sample per pixel, no depth test; culling as asked, triangles counterclockwise as the
+// viewer sees them being the front): row-major, width x height.
+inline std::vector<bool> pipeline_coverage(int width, int height, softraster::Topology topology, std::span<const PixelVertex> positions,
+                                           softraster::CullMode cull = softraster::CullMode::None) {
     softraster::Framebuffer fb(width, height);
     softraster::Context ctx(fb);
     ctx.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    ctx.state.cull = softraster::CullMode::None;
+    ctx.state.cull = cull;
     ctx.state.depth_test = false;
     std::vector<uint32_t> indices(positions.size());
     for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
