@@ -180,9 +180,10 @@ try:
         check('resized: the frame follows the window', (w, h) == (160, 120) and view.poll() is None, (w, h))
         xdotool('key', '--window', window, 'q')
         try:
-            check('q quits', view.wait(timeout=30) == 0)
+            code = view.wait(timeout=30)
+            check('q quits', code == 0, '(exit %s) %s' % (code, view.stderr.read()[-600:]))
         except subprocess.TimeoutExpired:
-            check('q quits', False)
+            check('q quits', False, '(still running after 30 s)')
     view.kill()
     # The measured orbit (docs/performance.md): it draws its frames and quits by itself.
     r = subprocess.run([exe, 'view', scene, '--orbit-frames', '12'], env=xenv, capture_output=True, text=True, timeout=120)
