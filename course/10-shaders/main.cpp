@@ -16,13 +16,6 @@ namespace {
 
 constexpr int kSize = 160;
 
-Canvas to_canvas(const softraster::Image& image) {
-    Canvas c(image.width, image.height);
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) c.set(x, y, {image.at(x, y).r, image.at(x, y).g, image.at(x, y).b});
-    return c;
-}
-
 // One draw of a mesh with shader look L into a fresh framebuffer: clear, draw, read.
 template <Look L>
 Canvas draw(const softraster::Mesh& mesh, const glm::mat4& model, const glm::mat4& view_projection) {

@@ -23,11 +23,7 @@ Canvas draw(const softraster::Mesh& mesh, const glm::vec3& eye, const glm::vec3&
     const std::vector<MeshIn> vertices = mesh_vertices(mesh);
     const LitShader<M> shader{glm::mat4(1.0f), perspective(40.0f, 1.0f, 0.1f, 50.0f) * look_at(eye, target, {0, 1, 0}), eye, light, albedo};
     ctx.draw(softraster::Topology::Triangles, shader, std::span<const MeshIn>(vertices), std::span<const uint32_t>(mesh.indices));
-    const softraster::Image image = ctx.read_pixels();
-    Canvas c(kSize, kSize);
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) c.set(x, y, {image.at(x, y).r, image.at(x, y).g, image.at(x, y).b});
-    return c;
+    return to_canvas(ctx.read_pixels());
 }
 
 }  // namespace

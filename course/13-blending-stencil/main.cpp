@@ -18,13 +18,6 @@ namespace {
 
 constexpr int kSize = 160;
 
-Canvas to_canvas(const softraster::Image& image) {
-    Canvas c(image.width, image.height);
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) c.set(x, y, {image.at(x, y).r, image.at(x, y).g, image.at(x, y).b});
-    return c;
-}
-
 const glm::mat4 kCamera = perspective(40.0f, 1.0f, 0.1f, 20.0f) * look_at({0.6f, 0.4f, 5}, {0, 0, 0}, {0, 1, 0});
 
 struct Pane {

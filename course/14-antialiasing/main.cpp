@@ -79,13 +79,6 @@ void checker_floor(softraster::Context& ctx, float w, float h) {
     ctx.finish();
 }
 
-Canvas to_canvas(const softraster::Image& image) {
-    Canvas c(image.width, image.height);
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) c.set(x, y, {image.at(x, y).r, image.at(x, y).g, image.at(x, y).b});
-    return c;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -24,13 +24,6 @@ struct Object {
     glm::vec3 albedo;
 };
 
-Canvas to_canvas(const softraster::Image& image) {
-    Canvas c(image.width, image.height);
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) c.set(x, y, {image.at(x, y).r, image.at(x, y).g, image.at(x, y).b});
-    return c;
-}
-
 Canvas draw(const std::vector<Object>& scene, const glm::vec3& to_light, const ShadowMap* map, float bias) {
     softraster::Framebuffer fb(kSize, kSize);
     softraster::Context ctx(fb);

@@ -14,13 +14,6 @@ namespace {
 
 constexpr int kSize = 160;
 
-Canvas to_canvas(const softraster::Image& image) {
-    Canvas c(image.width, image.height);
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) c.set(x, y, {image.at(x, y).r, image.at(x, y).g, image.at(x, y).b});
-    return c;
-}
-
 Canvas draw(softraster::Mesh mesh, const glm::vec3& eye, const glm::vec3& target, const glm::vec3& to_light, const TexelImage* map, float repeats) {
     softraster::generate_tangents(mesh);  // (T along +u at every vertex, from the uvs)
     softraster::Framebuffer fb(kSize, kSize);

@@ -59,6 +59,14 @@ private:
     softraster::Image image_;
 };
 
+// A picture the pipeline made (lessons 10 on), as a canvas.
+inline Canvas to_canvas(const softraster::Image& image) {
+    Canvas c(image.width, image.height);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) c.set(x, y, {image.at(x, y).r, image.at(x, y).g, image.at(x, y).b});
+    return c;
+}
+
 // Pictures side by side (top-aligned), with `gap` pixels of `background` between them: the
 // comparisons of the lessons.
 inline Canvas beside(std::initializer_list<const Canvas*> parts, int gap = 2, Color background = kBlack) {
