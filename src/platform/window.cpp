@@ -1,10 +1,12 @@
 #include "platform/window.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 
 #include <SDL.h>
 #include <SDL_ttf.h>
+#include <X11/Xlib.h>
 
 #include "softraster/error.h"
 
@@ -12,6 +14,18 @@ namespace softraster::platform {
 
 namespace {
 constexpr int kStatusHeight = 22;
+
+// Xlib's default answer to a protocol error is to end the program (exit code 1). SDL sends
+// events to other windows (the root, a selection's requester) that may be gone by then: under
+// Xvfb a window quit with 'q' sometimes ended with "BadWindow ... X_SendEvent" this way. Such
+// an error does not concern the pictures: say it, and go on. (Set before SDL starts, so
+// that SDL's own safety net passes errors on to this one.)
+int report_x_error(Display* display, XErrorEvent* e) {
+    char text[256] = "";
+    XGetErrorText(display, e->error_code, text, sizeof text);
+    std::fprintf(stderr, "softraster view: X error ignored: %s (request %d)\n", text, int(e->request_code));
+    return 0;
+}
 const char* const kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // Debian's fonts-dejavu-core
 }  // namespace
 
@@ -28,6 +42,7 @@ Window::Window(const std::string& title, int width, int height) : impl_(std::mak
     // The pictures are finished pixels, copied straight into the window's own surface, with
     // no OpenGL (which would start a GL driver and its threads beside ours).
     SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
+    XSetErrorHandler(report_x_error);
     if (!display || SDL_Init(SDL_INIT_VIDEO) != 0)
         throw InputError(std::string("no display to open a window on (") + (display ? SDL_GetError() : "DISPLAY is not set") +
                          "): try 'softraster view --terminal' or 'softraster animate'");
