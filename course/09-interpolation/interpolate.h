@@ -6,6 +6,19 @@
 
 namespace course {
 
+// The barycentric weights (l0, l1, l2) of the point (px, py) in the triangle whose corners
+// are at (x[k], y[k]) on the screen (lesson 3's edge functions over the area, here on the
+// unsnapped positions, in double precision, as a GPU builds its attribute planes).
+struct ScreenWeights {
+    double x[3], y[3];
+    double edge(int i, int j, double px, double py) const { return (x[j] - x[i]) * (py - y[i]) - (y[j] - y[i]) * (px - x[i]); }
+    double area() const { return edge(0, 1, x[2], y[2]); }
+    std::array<double, 3> at(double px, double py) const {
+        const double a = area();
+        return {edge(1, 2, px, py) / a, edge(2, 0, px, py) / a, edge(0, 1, px, py) / a};
+    }
+};
+
 // Affine (线性插值, in screen space): weight the values as the pixel's position weights the
 // corners. Right for depth (lesson 5), wrong for anything painted on the surface under a
 // perspective camera: equal steps on the screen are not equal steps on the surface.

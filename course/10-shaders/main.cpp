@@ -21,7 +21,7 @@ template <Look L>
 Canvas draw(const softraster::Mesh& mesh, const glm::mat4& model, const glm::mat4& view_projection) {
     softraster::Framebuffer fb(kSize, kSize);
     softraster::Context ctx(fb);
-    ctx.clear(glm::vec4(28 / 255.0f, 30 / 255.0f, 36 / 255.0f, 1.0f));
+    ctx.clear(clear_color(kDark));
     const std::vector<MeshIn> vertices = mesh_vertices(mesh);
     ctx.draw(softraster::Topology::Triangles, LessonShader<L>{model, view_projection}, std::span<const MeshIn>(vertices),
              std::span<const uint32_t>(mesh.indices));

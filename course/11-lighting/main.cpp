@@ -19,7 +19,7 @@ template <Model M>
 Canvas draw(const softraster::Mesh& mesh, const glm::vec3& eye, const glm::vec3& target, const glm::vec3& light, const glm::vec3& albedo) {
     softraster::Framebuffer fb(kSize, kSize);
     softraster::Context ctx(fb);
-    ctx.clear(glm::vec4(28 / 255.0f, 30 / 255.0f, 36 / 255.0f, 1.0f));
+    ctx.clear(clear_color(kDark));
     const std::vector<MeshIn> vertices = mesh_vertices(mesh);
     const LitShader<M> shader{glm::mat4(1.0f), perspective(40.0f, 1.0f, 0.1f, 50.0f) * look_at(eye, target, {0, 1, 0}), eye, light, albedo};
     ctx.draw(softraster::Topology::Triangles, shader, std::span<const MeshIn>(vertices), std::span<const uint32_t>(mesh.indices));

@@ -38,19 +38,17 @@ Canvas draw(const glm::mat4& view_projection, const glm::vec3 (&corner)[4], floa
     const glm::vec2 uv[4] = {{0, 0}, {repeats, 0}, {repeats, repeats}, {0, repeats}};
     const int tris[2][3] = {{0, 1, 2}, {0, 2, 3}};
     for (const auto& t : tris) {
-        double sx[3], sy[3];
+        ScreenWeights weights;
         Point s[3];
         std::array<float, 3> u, v, w;
         for (int k = 0; k < 3; ++k) {
             const glm::vec4 clip = view_projection * glm::vec4(corner[t[k]], 1.0f);
             const ScreenPoint p = to_screen(clip, kW, kH);
-            sx[k] = p.x, sy[k] = p.y, s[k] = {std::lround(p.x * kSub), std::lround(p.y * kSub)};
+            weights.x[k] = p.x, weights.y[k] = p.y, s[k] = {std::lround(p.x * kSub), std::lround(p.y * kSub)};
             u[size_t(k)] = uv[t[k]].x, v[size_t(k)] = uv[t[k]].y, w[size_t(k)] = clip.w;
         }
-        auto edge = [&](int i, int j, double px, double py) { return (sx[j] - sx[i]) * (py - sy[i]) - (sy[j] - sy[i]) * (px - sx[i]); };
-        const double area = edge(0, 1, sx[2], sy[2]);
         auto uv_at = [&](double px, double py) {
-            const std::array<double, 3> l = {edge(1, 2, px, py) / area, edge(2, 0, px, py) / area, edge(0, 1, px, py) / area};
+            const std::array<double, 3> l = weights.at(px, py);
             return glm::vec2(interpolate_perspective(l, u, w), interpolate_perspective(l, v, w));
         };
         fill_edge_functions(s[0], s[1], s[2], kW, kH, [&](int x, int y) {

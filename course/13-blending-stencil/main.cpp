@@ -31,7 +31,7 @@ Canvas glass(const std::vector<Pane>& order, softraster::BlendMode blend) {
     const std::vector<MeshIn> v = mesh_vertices(square);
     softraster::Framebuffer fb(kSize, kSize);
     softraster::Context ctx(fb);
-    ctx.clear(glm::vec4(28 / 255.0f, 30 / 255.0f, 36 / 255.0f, 1.0f));
+    ctx.clear(clear_color(kDark));
     ctx.state.cull = softraster::CullMode::None;
     const glm::mat4 face = glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1, 0, 0));
     const glm::mat4 wall = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -1.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(2.0f)) * face;
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
     auto portal = [&](bool with_stencil) {
         softraster::Framebuffer fb(kSize, kSize);
         softraster::Context ctx(fb);
-        ctx.clear(glm::vec4(28 / 255.0f, 30 / 255.0f, 36 / 255.0f, 1.0f));
+        ctx.clear(clear_color(kDark));
         ctx.state.cull = softraster::CullMode::None;
         if (with_stencil) {
             ctx.state.color_write = false;  // the mask only: no color,

@@ -49,7 +49,7 @@ softraster::Image render(int width, int height, Aa aa, Draw draw) {
     const int k = aa == Aa::Ssaa ? 2 : 1;
     softraster::Framebuffer fb(width * k, height * k, aa == Aa::Msaa ? 4 : 1);
     softraster::Context ctx(fb);
-    ctx.clear(glm::vec4(28 / 255.0f, 30 / 255.0f, 36 / 255.0f, 1.0f));
+    ctx.clear(clear_color(kDark));
     ctx.state.cull = softraster::CullMode::None;
     draw(ctx, float(width * k), float(height * k));
     const softraster::Image picture = ctx.read_pixels();  // (MSAA: resolved here)

@@ -27,7 +27,7 @@ struct Object {
 Canvas draw(const std::vector<Object>& scene, const glm::vec3& to_light, const ShadowMap* map, float bias) {
     softraster::Framebuffer fb(kSize, kSize);
     softraster::Context ctx(fb);
-    ctx.clear(glm::vec4(28 / 255.0f, 30 / 255.0f, 36 / 255.0f, 1.0f));
+    ctx.clear(clear_color(kDark));
     const glm::mat4 camera = perspective(40.0f, 1.0f, 0.1f, 30.0f) * look_at({0, 3.2f, 5.5f}, {0, 0.3f, 0}, {0, 1, 0});
     for (const Object& o : scene)
         ctx.draw(softraster::Topology::Triangles, ShadowedShader{o.model, camera, to_light, o.albedo, map, bias},

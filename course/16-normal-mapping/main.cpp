@@ -18,7 +18,7 @@ Canvas draw(softraster::Mesh mesh, const glm::vec3& eye, const glm::vec3& target
     softraster::generate_tangents(mesh);  // (T along +u at every vertex, from the uvs)
     softraster::Framebuffer fb(kSize, kSize);
     softraster::Context ctx(fb);
-    ctx.clear(glm::vec4(28 / 255.0f, 30 / 255.0f, 36 / 255.0f, 1.0f));
+    ctx.clear(clear_color(kDark));
     const NormalMappedShader shader{glm::mat4(1.0f), perspective(40.0f, 1.0f, 0.1f, 30.0f) * look_at(eye, target, {0, 1, 0}), eye,
                                     glm::normalize(to_light), {0.75f, 0.55f, 0.35f}, map, repeats};
     ctx.draw(softraster::Topology::Triangles, shader, std::span<const softraster::TangentVertex>(mesh.tangent_vertices),

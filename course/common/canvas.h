@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <initializer_list>
 
+#include <glm/vec4.hpp>
+
 #include "softraster/image.h"
 #include "softraster/io/image_io.h"
 
@@ -20,6 +22,9 @@ struct Color {
 
 inline constexpr Color kBlack{0, 0, 0}, kWhite{255, 255, 255}, kRed{230, 60, 50}, kGreen{70, 190, 90}, kBlue{60, 110, 230},
     kYellow{240, 200, 60}, kGray{110, 110, 110}, kDark{28, 30, 36};
+
+// A color as the pipeline's clear takes it (lessons 10 on clear to the canvas's background).
+inline glm::vec4 clear_color(Color c) { return {float(c.r) / 255.0f, float(c.g) / 255.0f, float(c.b) / 255.0f, 1.0f}; }
 
 class Canvas {
 public:

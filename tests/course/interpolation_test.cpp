@@ -29,17 +29,15 @@ void compare(std::mt19937& rng, float w_lo, float w_hi, Check check) {
         softraster::test::ClipVertexIn v[3];
         std::array<float, 3> a, ws;
         Point s[3];
-        double sx[3], sy[3];  // unsnapped: the pipeline builds its attribute planes from these
+        ScreenWeights weights;  // unsnapped: the pipeline builds its attribute planes from these
         for (int k = 0; k < 3; ++k) {
             ws[size_t(k)] = w(rng);
             v[k].clip = glm::vec4(ndc(rng), ndc(rng), ndc(rng), 1.0f) * ws[size_t(k)];
             v[k].value = a[size_t(k)] = value(rng);
             const ScreenPoint p = to_viewport(v[k].clip, {0, 0, float(kSize), float(kSize)});
             s[k] = {std::lround(p.x * kSub), std::lround(p.y * kSub)};
-            sx[k] = p.x, sy[k] = p.y;
+            weights.x[k] = p.x, weights.y[k] = p.y;
         }
-        auto edge = [&](int i, int j, double px, double py) { return (sx[j] - sx[i]) * (py - sy[i]) - (sy[j] - sy[i]) * (px - sx[i]); };
-        const double exact_area = edge(0, 1, sx[2], sy[2]);
         const double area = double(edge_function(s[0], s[1], s[2]));
         if (std::fabs(area) < 4.0 * kSub * kSub) continue;
         std::vector<float> captured(kSize * kSize, NAN);
@@ -54,9 +52,7 @@ void compare(std::mt19937& rng, float w_lo, float w_hi, Check check) {
             for (int x = 0; x < kSize; ++x) {
                 const float got = captured[size_t(y * kSize + x)];
                 if (std::isnan(got)) continue;
-                const double px = x + 0.5, py = y + 0.5;
-                const std::array<double, 3> l = {edge(1, 2, px, py) / exact_area, edge(2, 0, px, py) / exact_area, edge(0, 1, px, py) / exact_area};
-                check(got, l, a, ws);
+                check(got, weights.at(x + 0.5, y + 0.5), a, ws);
             }
     }
 }

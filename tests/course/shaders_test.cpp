@@ -28,22 +28,19 @@ TEST(CourseShaders, VaryingsArriveInterpolatedPerspectiveCorrectly) {
                  std::span<const uint32_t>(indices));
         const softraster::Image picture = ctx.read_pixels();
         // The corners on the screen (unsnapped) and their w, as lessons 6, 8 and 9 compute them.
-        double sx[3], sy[3];
+        ScreenWeights weights;
         std::array<float, 3> w;
         for (int k = 0; k < 3; ++k) {
             const glm::vec4 clip = camera * glm::vec4(v[size_t(k)].position, 1.0f);
             const ScreenPoint p = to_screen(clip, kSize, kSize);
-            sx[k] = p.x, sy[k] = p.y, w[size_t(k)] = clip.w;
+            weights.x[k] = p.x, weights.y[k] = p.y, w[size_t(k)] = clip.w;
         }
-        auto edge = [&](int i, int j, double px, double py) { return (sx[j] - sx[i]) * (py - sy[i]) - (sy[j] - sy[i]) * (px - sx[i]); };
-        const double area = edge(0, 1, sx[2], sy[2]);
-        if (std::fabs(area) < 4.0) continue;
+        if (std::fabs(weights.area()) < 4.0) continue;
         for (int y = 0; y < kSize; ++y)
             for (int x = 0; x < kSize; ++x) {
                 const softraster::Rgba8 got = picture.at(x, y);
                 if (got.a == 0) continue;  // (not drawn: the clear color's alpha is 0)
-                const double px = x + 0.5, py = y + 0.5;
-                const std::array<double, 3> l = {edge(1, 2, px, py) / area, edge(2, 0, px, py) / area, edge(0, 1, px, py) / area};
+                const std::array<double, 3> l = weights.at(x + 0.5, y + 0.5);
                 for (int c = 0; c < 3; ++c) {
                     const float want = interpolate_perspective(l, {v[0].color[c], v[1].color[c], v[2].color[c]}, w);
                     const uint8_t stored = c == 0 ? got.r : c == 1 ? got.g : got.b;
