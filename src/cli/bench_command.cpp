@@ -35,7 +35,7 @@ Run add_bench_command(CLI::App& app) {
         const unsigned threads = thread_count(opt->threads);
         std::optional<SceneRenderer> still;  // without --orbit one renderer draws every frame
         if (!opt->orbit) still.emplace(scene, threads);
-        Framebuffer fb = still ? still->make_framebuffer() : SceneRenderer(scene, threads).make_framebuffer();
+        std::optional<Framebuffer> fb;  // made by the first frame's renderer, drawn into by all
         std::vector<double> ms;
         RenderStats stats;
         size_t triangles = 0;
@@ -48,11 +48,12 @@ Run add_bench_command(CLI::App& app) {
             if (opt->orbit) turned.emplace(turned_scene(scene, 360.0 * std::max(0, i - opt->warmup) / opt->frames), threads);
             const SceneRenderer& renderer = opt->orbit ? *turned : *still;
             triangles = renderer.triangle_count();
-            stats = renderer.render(fb);
+            if (!fb) fb.emplace(renderer.make_framebuffer());
+            stats = renderer.render(*fb);
             // With MSAA the resolve is part of every frame (llvmpipe's timing blits to a
             // resolve buffer too); single-sampled, the framebuffer already is the picture.
-            if (fb.samples() > 1) resolve(fb, picture);
-            if (scene.supersample > 1) picture = downsample_box(fb.samples() > 1 ? picture : fb.read_pixels(), scene.supersample);
+            if (fb->samples() > 1) resolve(*fb, picture);
+            if (scene.supersample > 1) picture = downsample_box(fb->samples() > 1 ? picture : fb->read_pixels(), scene.supersample);
             const double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             if (i >= opt->warmup) ms.push_back(dt);
         }

@@ -112,6 +112,7 @@ int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::Ap
     std::string error, status;
     int screenshot = 0;
     bool dirty = true, quit = false;
+    double length = animation_length(loaded);  // of the keyframes (0: nothing moves), again after each reload
     std::optional<Framebuffer> fb;  // kept from frame to frame while its size and format stay
     auto draw = [&] {
         const Scene scene = frame_scene(loaded, view);
@@ -125,7 +126,7 @@ int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::Ap
         back = renderer.resolve(*fb);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::swap(front, back);  // the frame is complete: it becomes the one shown
-        status = status_line(scene, view, ms, renderer.triangle_count(), animation_length(loaded) > 0.0);
+        status = status_line(scene, view, ms, renderer.triangle_count(), length > 0.0);
         display.present(front, status, error);
         dirty = false;
     };
@@ -142,9 +143,8 @@ int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::Ap
             view.azimuth = 360.0 * frames / options.orbit_frames;
             dirty = true;
         }
-        // Keyframes play in real time, looping (the length measured again after a reload).
+        // Keyframes play in real time, looping.
         const auto now = std::chrono::steady_clock::now();
-        const double length = animation_length(loaded);
         if (length > 0.0 && !view.paused) {
             view.time = std::fmod(view.time + std::chrono::duration<double>(now - last_frame).count(), length);
             dirty = true;
@@ -195,6 +195,7 @@ int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::Ap
             stamp = changed;
             try {
                 loaded = input_scene(path, options.model, cmd);
+                length = animation_length(loaded);
                 error.clear();
             } catch (const InputError& e) {
                 error = e.what();
