@@ -126,8 +126,10 @@ void check_complete(std::string_view b, Format f, const std::string& name) {
 }
 
 
-// The largest picture a texture may be: 2^28 texels (1 GiB of RGBA8).
+// The largest picture a texture may be: 2^28 texels (1 GiB of RGBA8), and 65536 a side (the
+// sampler's fixed-point texel coordinates, texture.h).
 constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
+constexpr int kMaxSide = 65536;
 
 // The OpenImageIO module's decode function, opened on first use (oiio_module.h): from
 // $SOFTRASTER_MODULE_DIR, beside the program, from the build and install folders, then the
@@ -180,7 +182,7 @@ Image decode(std::string_view bytes, const std::filesystem::path* file, const st
     int w = 0, h = 0, channels = 0;
     if (!stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h, &channels))
         throw InputError(name + ": corrupt " + format_name(format) + " (" + stbi_failure_reason() + ")");
-    if (uint64_t(w) * uint64_t(h) > kMaxTexels)
+    if (uint64_t(w) * uint64_t(h) > kMaxTexels || w > kMaxSide || h > kMaxSide)
         throw InputError(name + ": picture too large (" + std::to_string(w) + "x" + std::to_string(h) + ")");
     stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h,
                                           &channels, 4);

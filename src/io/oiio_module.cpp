@@ -16,6 +16,7 @@ namespace {
 
 // The largest picture a texture may be: 2^28 texels (1 GiB of RGBA8).
 constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
+constexpr int kMaxSide = 65536;  // (image_io.cpp)
 
 void set_error(SoftrasterDecoded* out, std::string what) {
     std::replace(what.begin(), what.end(), '\n', ' ');
@@ -45,7 +46,7 @@ extern "C" __attribute__((visibility("default"))) void softraster_oiio_decode(co
         if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1)
             return set_error(out, "unsupported picture layout (" + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                                       ", " + std::to_string(spec.nchannels) + " channels)");
-        if (uint64_t(spec.width) * uint64_t(spec.height) > kMaxTexels)
+        if (uint64_t(spec.width) * uint64_t(spec.height) > kMaxTexels || spec.width > kMaxSide || spec.height > kMaxSide)
             return set_error(out, "picture too large (" + std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")");
         const int channels = std::min(spec.nchannels, 4);
         const size_t texels = size_t(spec.width) * size_t(spec.height);

@@ -65,6 +65,7 @@ inline int probe_count(float rmax, float rmin, int max_anisotropy) {
 
 Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpace::Srgb) {
     if (image.width < 1 || image.height < 1) throw std::invalid_argument("texture image is empty");
+    if (image.width > kMaxSide || image.height > kMaxSide) throw std::invalid_argument("texture image is wider or taller than 65536 texels");
     // The chain row by row first (downsample reads it so), then into tiles.
     std::vector<std::vector<Rgba8>> rows;
     std::vector<Rgba8> base(size_t(image.width) * size_t(image.height));
@@ -83,6 +84,7 @@ Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpa
         const Level& l = levels_[std::min(k, levels_.size() - 1)];
         tables_.width[k] = l.width, tables_.height[k] = l.height, tables_.tiles_x[k] = l.tiles_x, tables_.offset[k] = l.offset;
     }
+    pot_ = std::has_single_bit(unsigned(image.width)) && std::has_single_bit(unsigned(image.height));
     storage_.assign(size_t(offset) + 15, 0u);
     aligned_ = (64 - reinterpret_cast<uintptr_t>(storage_.data()) % 64) % 64 / sizeof(uint32_t);
     uint32_t* out = storage_.data() + aligned_;
@@ -156,7 +158,47 @@ glm::vec4 Texture::sample_level(int level, glm::vec2 uv, const Sampler& s) const
     }
 }
 
+// The fixed-point lookup (texture.h "Precision"): the sample point in 1/256 texel steps, and
+// per channel, with texels a, b below and c, d above (b, d to the right) and weights fx, fy
+// in 0..255:
+//   bottom = 256 a + (b - a) fx,  top = 256 c + (d - c) fx     (exact, 0..65280)
+//   value  = bottom - (bottom fy >> 8) + (top fy >> 8)          (0..65280)
+// The last line is how sixteen-bit lanes compute bottom + (top - bottom) fy / 256 with two
+// high-half products (sample_lanes); it stays within 0..65280.
+template <Filter F>
+glm::ivec4 Texture::sample_level_fixed(int level, glm::vec2 uv, const Sampler& s) const {
+    const Level& l = levels_[size_t(level)];
+    const float half = F == Filter::Nearest ? 0.0f : 0.5f;  // (texel i's center is at i + 0.5)
+    const int x = detail::floor_to_int((detail::reduce(uv.x, s.wrap_s) * float(l.width) - half) * 256.0f);
+    const int y = detail::floor_to_int((detail::reduce(uv.y, s.wrap_t) * float(l.height) - half) * 256.0f);
+    const int fx = F == Filter::Nearest ? 0 : x & 255, fy = F == Filter::Nearest ? 0 : y & 255;
+    const int ia = detail::wrap_texel(x >> 8, l.width, s.wrap_s), ib = detail::wrap_texel((x >> 8) + 1, l.width, s.wrap_s);
+    const int ja = detail::wrap_texel(y >> 8, l.height, s.wrap_t), jb = detail::wrap_texel((y >> 8) + 1, l.height, s.wrap_t);
+    const uint32_t a = texels()[texel_index(l, ia, ja)], b = texels()[texel_index(l, ib, ja)];
+    const uint32_t c = texels()[texel_index(l, ia, jb)], d = texels()[texel_index(l, ib, jb)];
+    glm::ivec4 r;
+    for (int k = 0; k < 4; ++k) {
+        auto channel = [k](uint32_t t) { return int((t >> (8 * k)) & 255u); };
+        const int bottom = channel(a) * 256 + (channel(b) - channel(a)) * fx, top = channel(c) * 256 + (channel(d) - channel(c)) * fx;
+        r[k] = bottom - ((bottom * fy) >> 8) + ((top * fy) >> 8);
+    }
+    return r;
+}
+
+namespace {
+// Two fixed-point lookups blended by an 8-bit weight, as one level's rows are blended.
+glm::ivec4 blend_fixed(const glm::ivec4& v0, const glm::ivec4& v1, float weight) {
+    const int w = detail::floor_to_int(weight * 256.0f);  // (weight < 1: 0..255)
+    glm::ivec4 r;
+    for (int k = 0; k < 4; ++k) r[k] = v0[k] - ((v0[k] * w) >> 8) + ((v1[k] * w) >> 8);
+    return r;
+}
+glm::vec4 unit_of_fixed(const glm::ivec4& v) { return glm::vec4(v) * Texture::kFixedToUnit; }
+}  // namespace
+
 glm::vec4 Texture::sample(glm::vec2 uv, const Sampler& s) const {
+    if (fixed_point(s))
+        return unit_of_fixed(s.mag == Filter::Nearest ? sample_level_fixed<Filter::Nearest>(0, uv, s) : sample_level_fixed<Filter::Bilinear>(0, uv, s));
     return s.mag == Filter::Nearest ? sample_level<Filter::Nearest>(0, uv, s) : sample_level<Filter::Bilinear>(0, uv, s);
 }
 
@@ -168,6 +210,13 @@ glm::vec4 Texture::sample(glm::vec2 uv, const UvDerivatives& d, const Sampler& s
         return s.min == Filter::Nearest ? sample_level<Filter::Nearest>(level, p, s) : sample_level<Filter::Bilinear>(level, p, s);
     };
     auto lookup = [&](glm::vec2 p) {
+        if (fixed_point(s)) {
+            auto at_fixed = [&](int level) {
+                return s.min == Filter::Nearest ? sample_level_fixed<Filter::Nearest>(level, p, s) : sample_level_fixed<Filter::Bilinear>(level, p, s);
+            };
+            const glm::ivec4 c0 = at_fixed(c.level0);
+            return unit_of_fixed(c.weight == 0.0f ? c0 : blend_fixed(c0, at_fixed(c.level1), c.weight));
+        }
         const glm::vec4 c0 = at(c.level0, p);
         if (c.weight == 0.0f) return c0;
         return c0 + (at(c.level1, p) - c0) * c.weight;
@@ -193,26 +242,29 @@ namespace {
 using simd::f8;
 using simd::i8;
 
-// detail::floor_to_int on eight lanes.
-inline i8 floor_to_int8(f8 t) {
-    const i8 i = simd::to_int(simd::select((t > -1.0e8f) & (t <= 1.0e8f), t, simd::splat(0.0f)));
-    const i8 floored = simd::select(simd::to_float(i) > t, i - 1, i);
-    return simd::select(t > 1.0e8f, simd::splat_i(100000000), simd::select(t > -1.0e8f, floored, simd::splat_i(-100000000)));
+// detail::floor_to_int on eight lanes, for |t| < 2^31 (texel coordinates after reduce8,
+// levels of detail): the same value without detail::floor_to_int's guards.
+inline i8 floor_small8(const f8& t) {
+    const i8 i = simd::to_int(t);
+    return i + (simd::to_float(i) > t);  // (a true comparison is -1)
 }
 
 // detail::reduce on eight lanes (the wrap mode is the same for all).
 inline f8 reduce8(f8 u, Wrap w) {
     if (w == Wrap::Repeat || w == Wrap::Mirror) {
         const bool mirror = w == Wrap::Mirror;
-        const f8 r = u - (mirror ? 2.0f : 1.0f) * simd::to_float(floor_to_int8(u * (mirror ? 0.5f : 1.0f)));
-        return simd::select((u >= -1.0e6f) & (u <= 1.0e6f), r, simd::splat(0.0f));
+        const f8 in = simd::select((u >= -1.0e6f) & (u <= 1.0e6f), u, simd::splat(0.0f));  // (out of range: 0, as reduce)
+        return in - (mirror ? 2.0f : 1.0f) * simd::to_float(floor_small8(in * (mirror ? 0.5f : 1.0f)));
     }
     const f8 c = simd::select(u < -1.0f, simd::splat(-1.0f), simd::select(u > 2.0f, simd::splat(2.0f), u));
     return simd::select(u == u, c, simd::splat(0.0f));
 }
 
-// detail::wrap_texel on eight lanes, n texels per lane.
+// detail::wrap_texel on eight lanes, n texels per lane. Pot: n is a power of two, and i is
+// in [-1, 2n] (as wrap_texel asks): repeat is then i mod n, the low bits.
+template <bool Pot>
 inline i8 wrap_texel8(i8 i, i8 n, Wrap w) {
+    if (Pot && w == Wrap::Repeat) return i & (n - 1);
     switch (w) {
         case Wrap::Repeat: return simd::select(i < 0, i + n, simd::select(i >= n, i - n, i));
         case Wrap::Clamp: return simd::select(i < 0, simd::splat_i(0), simd::select(i >= n, n - 1, i));
@@ -246,13 +298,104 @@ struct LaneLevels {
     i8 width, height, tiles_x, offset;
 };
 
+// ---- the fixed-point filter on sixteen-bit lanes (sample_level_fixed)
+//
+// One gather's eight texels make two registers of sixteen 16-bit lanes: texels 0-3 in `lo`,
+// 4-7 in `hi`, each texel's r, g, b, a in four lanes. A blend then works on two texels'
+// channels at once, sixteen at a time, instead of eight float lanes per channel.
+using u16x16 = uint16_t __attribute__((vector_size(32)));
+struct Fixed8 {
+    u16x16 lo, hi;
+};
+
+// The texels' bytes, widened to 16 bits. (The vector code is the specification; the AVX2
+// path says it in fewer instructions than the compiler finds for it.)
+template <bool Wide>
+inline void widen(const i8& texels, Fixed8& out) {
+    using u8x32 = uint8_t __attribute__((vector_size(32)));
+    const u8x32 b = std::bit_cast<u8x32>(texels);
+    out = {__builtin_convertvector(__builtin_shufflevector(b, b, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15), u16x16),
+           __builtin_convertvector(__builtin_shufflevector(b, b, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31), u16x16)};
+}
+// Each lane's weight (0..65535) in its texel's four 16-bit lanes.
+template <bool Wide>
+inline void spread(const i8& weight, Fixed8& out) {
+    const u16x16 h = std::bit_cast<u16x16>(weight);  // (lane k's low half is 16-bit lane 2k)
+    out = {__builtin_shufflevector(h, h, 0, 0, 0, 0, 2, 2, 2, 2, 4, 4, 4, 4, 6, 6, 6, 6),
+           __builtin_shufflevector(h, h, 8, 8, 8, 8, 10, 10, 10, 10, 12, 12, 12, 12, 14, 14, 14, 14)};
+}
+// Channel k of the eight texels as floats in [0, 1] (unit_of_fixed).
+template <bool Wide>
+inline void unit_of_fixed8(const Fixed8& v, std::array<f8, 4>& out) {
+    auto channel = [&]<int K>() {
+        const auto lanes = __builtin_shufflevector(v.lo, v.hi, K, K + 4, K + 8, K + 12, K + 16, K + 20, K + 24, K + 28);
+        out[K] = simd::to_float(__builtin_convertvector(lanes, i8)) * Texture::kFixedToUnit;
+    };
+    channel.template operator()<0>(), channel.template operator()<1>(), channel.template operator()<2>(), channel.template operator()<3>();
+}
+#if SOFTRASTER_HAS_AVX2_PATH
+template <>
+[[gnu::target("avx2")]] inline void widen<true>(const i8& texels, Fixed8& out) {
+    const __m256i t = __m256i(texels);
+    out = {u16x16(_mm256_cvtepu8_epi16(_mm256_castsi256_si128(t))), u16x16(_mm256_cvtepu8_epi16(_mm256_extracti128_si256(t, 1)))};
+}
+template <>
+[[gnu::target("avx2")]] inline void spread<true>(const i8& weight, Fixed8& out) {
+    const __m256i w = __m256i(weight), both = _mm256_or_si256(w, _mm256_slli_epi32(w, 16));  // the weight in both halves
+    out = {u16x16(_mm256_permutevar8x32_epi32(both, _mm256_setr_epi32(0, 0, 1, 1, 2, 2, 3, 3))),
+           u16x16(_mm256_permutevar8x32_epi32(both, _mm256_setr_epi32(4, 4, 5, 5, 6, 6, 7, 7)))};
+}
+template <>
+[[gnu::target("avx2")]] inline void unit_of_fixed8<true>(const Fixed8& v, std::array<f8, 4>& out) {
+    // As 32-bit lanes, lo is (r, g) and (b, a) of texels 0-3 in turn, hi of texels 4-7.
+    const __m256 lo = _mm256_castsi256_ps(__m256i(v.lo)), hi = _mm256_castsi256_ps(__m256i(v.hi));
+    const __m256i rg = _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0x88)), 0xd8);
+    const __m256i ba = _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0xdd)), 0xd8);
+    const __m256i low = _mm256_set1_epi32(0xffff);
+    const __m256i channel[4] = {_mm256_and_si256(rg, low), _mm256_srli_epi32(rg, 16), _mm256_and_si256(ba, low), _mm256_srli_epi32(ba, 16)};
+    for (int k = 0; k < 4; ++k) out[size_t(k)] = f8(_mm256_mul_ps(_mm256_cvtepi32_ps(channel[k]), _mm256_set1_ps(Texture::kFixedToUnit)));
+}
+#endif
+
+// (a b) >> 16 per 16-bit lane: one instruction on the AVX2 path. (By reference: see gather.)
+template <bool Wide>
+inline void mul_high(const u16x16& a, const u16x16& b, u16x16& out) {
+    for (int k = 0; k < 16; ++k) out[k] = uint16_t((uint32_t(a[k]) * uint32_t(b[k])) >> 16);
+}
+#if SOFTRASTER_HAS_AVX2_PATH
+template <>
+[[gnu::target("avx2")]] inline void mul_high<true>(const u16x16& a, const u16x16& b, u16x16& out) {
+    out = u16x16(_mm256_mulhi_epu16(__m256i(a), __m256i(b)));
+}
+#endif
+
+// v0 - (v0 w >> 8) + (v1 w >> 8), w256 = w << 8: the blend of sample_level_fixed and blend_fixed.
+template <bool Wide>
+inline u16x16 blend16(const u16x16& v0, const u16x16& v1, const u16x16& w256) {
+    u16x16 h0, h1;
+    mul_high<Wide>(v0, w256, h0);
+    mul_high<Wide>(v1, w256, h1);
+    return v0 - h0 + h1;
+}
+
+// A fixed-point level lookup: the four footprint texels, the weights in 0..255.
+template <bool Wide>
+inline Fixed8 bilinear16(const i8 (&texels)[4], const i8& fx, const i8& fy) {
+    Fixed8 a, b, c, d, wx, wy;
+    widen<Wide>(texels[0], a), widen<Wide>(texels[1], b), widen<Wide>(texels[2], c), widen<Wide>(texels[3], d);
+    spread<Wide>(fx, wx), spread<Wide>(fy << 8, wy);
+    // bottom = 256 a + (b - a) fx: exact, though (b - a) fx wraps around on its own.
+    auto row = [](const u16x16& p, const u16x16& q, const u16x16& w) { return u16x16(p << 8) + (q - p) * w; };
+    return {blend16<Wide>(row(a.lo, b.lo, wx.lo), row(c.lo, d.lo, wx.lo), wy.lo), blend16<Wide>(row(a.hi, b.hi, wx.hi), row(c.hi, d.hi, wx.hi), wy.hi)};
+}
+
 }  // namespace
 
 template <bool Wide, bool Srgb>
 void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
     // Anisotropic filtering compiles to a copy of its own (Aniso), so that it costs the
-    // other lookups nothing.
-    auto body = [&]<bool Aniso>() {
+    // other lookups nothing; so does the fixed-point filter (Fixed, texture.h "Precision").
+    auto body = [&]<bool Aniso, bool Fixed, bool Pot>() {
         using simd::select, simd::splat, simd::splat_i, simd::to_float;
         // Which level(s) and filter each lane takes (select_lod).
         i8 level0 = splat_i(0), level1 = splat_i(0), nearest = splat_i(s.mag == Filter::Nearest ? -1 : 0), probes = splat_i(1);
@@ -280,7 +423,7 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
             } else if (s.mip == MipFilter::Linear) {
                 const i8 mbits = (bits & 0x007fffff) | 0x3f800000;
                 const f8 lod = 0.5f * (to_float(exponent) + (std::bit_cast<f8>(mbits) - 1.0f));
-                const i8 i = floor_to_int8(lod);
+                const i8 i = floor_small8(lod);
                 const i8 inside = minified & (i >= 0) & (i < last);
                 level0 = select(minified & (i >= last), splat_i(last), select(inside, i, splat_i(0)));
                 level1 = select(inside, i + 1, level0);
@@ -290,8 +433,8 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         const bool two_levels = s.mip == MipFilter::Linear && simd::any(weight != 0.0f);
         auto lane_levels = [&](i8 level) {
             LaneLevels r{};
-            if (!simd::any(level != 0)) {
-                const Level& l = levels_[0];
+            if (!simd::any(level != level[0])) {  // one level for all (neighbouring quads mostly agree)
+                const Level& l = levels_[size_t(level[0])];
                 return LaneLevels{splat_i(l.width), splat_i(l.height), splat_i(l.tiles_x), splat_i(l.offset)};
             }
             if (levels() <= 16) {  // a texture under 65536 texels a side: two table lookups per number
@@ -316,56 +459,78 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         const uint32_t* texels = this->texels();
         const std::array<float, 256>& decode = srgb::tables().decode;
         const bool has_border = s.wrap_s == Wrap::Border || s.wrap_t == Wrap::Border;
-        auto at_level = [&](const LaneLevels& l, const f8& ur, const f8& vr, std::array<f8, 4>& out) {
-            const f8 x = ur * to_float(l.width) - half, y = vr * to_float(l.height) - half;
-            const i8 i0 = floor_to_int8(x), j0 = floor_to_int8(y);
-            const f8 fx = select(nearest, splat(0.0f), x - to_float(i0)), fy = select(nearest, splat(0.0f), y - to_float(j0));
-            const i8 ia = wrap_texel8(i0, l.width, s.wrap_s), ib = wrap_texel8(i0 + 1, l.width, s.wrap_s);
-            const i8 ja = wrap_texel8(j0, l.height, s.wrap_t), jb = wrap_texel8(j0 + 1, l.height, s.wrap_t);
-            std::array<f8, 4> c[4];  // the footprint's texels: (ia, ja), (ib, ja), (ia, jb), (ib, jb)
+        // The footprint's four texels, (ia, ja), (ib, ja), (ia, jb), (ib, jb), from the texel
+        // below-left of the sample point, and which are the border color.
+        auto footprint = [&](const LaneLevels& l, const i8& i0, const i8& j0, i8 (&texel)[4], i8 (&border)[4]) {
+            const i8 ia = wrap_texel8<Pot>(i0, l.width, s.wrap_s), ib = wrap_texel8<Pot>(i0 + 1, l.width, s.wrap_s);
+            const i8 ja = wrap_texel8<Pot>(j0, l.height, s.wrap_t), jb = wrap_texel8<Pot>(j0 + 1, l.height, s.wrap_t);
             const i8 is[4] = {ia, ib, ia, ib}, js[4] = {ja, ja, jb, jb};
             for (int t = 0; t < 4; ++t) {
-                const i8 border = (is[t] < 0) | (js[t] < 0);  // (never without a border wrap mode)
+                border[t] = (is[t] < 0) | (js[t] < 0);  // (never without a border wrap mode)
                 const i8 index = l.offset + ((js[t] >> 2) * l.tiles_x + (is[t] >> 2)) * 16 + (js[t] & 3) * 4 + (is[t] & 3);
-                i8 texel;
-                gather<Wide>(texels, has_border ? select(border, splat_i(0), index) : index, texel);
+                gather<Wide>(texels, has_border ? select(border[t], splat_i(0), index) : index, texel[t]);
+            }
+        };
+        // One level's lookup: in fixed point (sample_level_fixed; a Fixed8 result) ...
+        auto at_level_fixed = [&](const LaneLevels& l, const f8& ur, const f8& vr) {
+            const i8 x = floor_small8((ur * to_float(l.width) - half) * 256.0f), y = floor_small8((vr * to_float(l.height) - half) * 256.0f);
+            i8 texel[4], border[4];
+            footprint(l, x >> 8, y >> 8, texel, border);
+            return bilinear16<Wide>(texel, select(nearest, splat_i(0), x & 255), select(nearest, splat_i(0), y & 255));
+        };
+        // ... or in float (sample_level; four channels).
+        auto at_level_float = [&](const LaneLevels& l, const f8& ur, const f8& vr, std::array<f8, 4>& out) {
+            const f8 x = ur * to_float(l.width) - half, y = vr * to_float(l.height) - half;
+            const i8 i0 = floor_small8(x), j0 = floor_small8(y);
+            const f8 fx = select(nearest, splat(0.0f), x - to_float(i0)), fy = select(nearest, splat(0.0f), y - to_float(j0));
+            i8 texel[4], border[4];
+            footprint(l, i0, j0, texel, border);
+            std::array<f8, 4> c[4];
+            for (int t = 0; t < 4; ++t)
                 for (int k = 0; k < 4; ++k) {
                     f8 value;
                     if (Srgb && k < 3) {  // decoded texel by texel, before the filter
-                        const i8 byte = (texel >> (8 * k)) & 255;
+                        const i8 byte = (texel[t] >> (8 * k)) & 255;
                         for (int lane = 0; lane < simd::kLanes; ++lane) value[lane] = decode[size_t(byte[lane])];
                     } else {
-                        value = to_float((texel >> (8 * k)) & 255) * (1.0f / 255.0f);
+                        value = to_float((texel[t] >> (8 * k)) & 255) * (1.0f / 255.0f);
                     }
-                    c[t][size_t(k)] = has_border ? select(border, splat(s.border[k]), value) : value;
+                    c[t][size_t(k)] = has_border ? select(border[t], splat(s.border[k]), value) : value;
                 }
-            }
             for (size_t k = 0; k < 4; ++k) {
                 const f8 bottom = c[0][k] * (1.0f - fx) + c[1][k] * fx, top = c[2][k] * (1.0f - fx) + c[3][k] * fx;
                 out[k] = bottom * (1.0f - fy) + top * fy;
             }
         };
-        if constexpr (!Aniso) {
-            const f8 ur = reduce8(u, s.wrap_s), vr = reduce8(v, s.wrap_t);
-            at_level(lane_levels(level0), ur, vr, rgba);
-            if (two_levels) {
-                std::array<f8, 4> c1;
-                at_level(lane_levels(level1), ur, vr, c1);
-                for (size_t k = 0; k < 4; ++k) rgba[k] = rgba[k] + (c1[k] - rgba[k]) * weight;
+        // The lookup at (ur, vr) in the lanes' level(s), as floats.
+        auto lookup_reduced = [&](const LaneLevels& levels0, const LaneLevels& levels1, const f8& ur, const f8& vr, std::array<f8, 4>& out) {
+            if constexpr (Fixed) {
+                Fixed8 f = at_level_fixed(levels0, ur, vr);
+                if (two_levels) {
+                    const Fixed8 v1 = at_level_fixed(levels1, ur, vr);
+                    Fixed8 w;
+                    spread<Wide>(floor_small8(weight * 256.0f) << 8, w);
+                    f = {blend16<Wide>(f.lo, v1.lo, w.lo), blend16<Wide>(f.hi, v1.hi, w.hi)};
+                }
+                unit_of_fixed8<Wide>(f, out);
+            } else {
+                at_level_float(levels0, ur, vr, out);
+                if (two_levels) {
+                    std::array<f8, 4> c1;
+                    at_level_float(levels1, ur, vr, c1);
+                    for (size_t k = 0; k < 4; ++k) out[k] = out[k] + (c1[k] - out[k]) * weight;
+                }
             }
-            return;
+        };
+        if constexpr (!Aniso) {
+            const LaneLevels levels0 = lane_levels(level0);
+            return lookup_reduced(levels0, two_levels ? lane_levels(level1) : levels0, reduce8(u, s.wrap_s), reduce8(v, s.wrap_t), rgba);
         }
         // Anisotropic: the same lookup at each probe (sample()'s loop); a lane adds its k-th
         // only while k < its N.
         const LaneLevels levels0 = lane_levels(level0), levels1 = two_levels ? lane_levels(level1) : levels0;
         auto lookup = [&](const f8& pu, const f8& pv, std::array<f8, 4>& out) {
-            const f8 ur = reduce8(pu, s.wrap_s), vr = reduce8(pv, s.wrap_t);
-            at_level(levels0, ur, vr, out);
-            if (two_levels) {
-                std::array<f8, 4> c1;
-                at_level(levels1, ur, vr, c1);
-                for (size_t k = 0; k < 4; ++k) out[k] = out[k] + (c1[k] - out[k]) * weight;
-            }
+            lookup_reduced(levels0, levels1, reduce8(pu, s.wrap_s), reduce8(pv, s.wrap_t), out);
         };
         int most_probes = 1;
         for (int lane = 0; lane < simd::kLanes; ++lane) most_probes = std::max(most_probes, int(probes[lane]));
@@ -380,8 +545,19 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         }
         for (size_t c = 0; c < 4; ++c) rgba[c] = rgba[c] / to_float(probes);
     };
-    if (s.max_anisotropy > 1) body.template operator()<true>();
-    else body.template operator()<false>();
+    // And a power-of-two texture's repeat wrap mode (pot_), a mask instead of comparisons.
+    auto with_filter = [&]<bool Aniso>() {
+        if constexpr (Srgb) {
+            body.template operator()<Aniso, false, false>();
+        } else if (fixed_point(s)) {
+            if (pot_ && (s.wrap_s == Wrap::Repeat || s.wrap_t == Wrap::Repeat)) body.template operator()<Aniso, true, true>();
+            else body.template operator()<Aniso, true, false>();
+        } else {
+            body.template operator()<Aniso, false, false>();
+        }
+    };
+    if (s.max_anisotropy > 1) with_filter.template operator()<true>();
+    else with_filter.template operator()<false>();
 }
 
 // In the CPU's best copy (simd.h).

@@ -33,7 +33,9 @@ TEST(CourseTextures, LookupsAndMipmapsAreTheProductionTextures) {
             const glm::vec4 c = sample_bilinear(ours, uv), d = theirs.sample(uv, softraster::Filter::Bilinear, softraster::Wrap::Repeat);
             for (int k = 0; k < 4; ++k) {
                 ASSERT_NEAR(a[k], b[k], 1e-6f) << uv.x << "," << uv.y;
-                ASSERT_NEAR(c[k], d[k], 1e-5f) << uv.x << "," << uv.y;
+                // softraster filters 8-bit textures in fixed point: its weights are cut to 1/256,
+                // which moves a blend by under 1/256 per axis (texture.h "Precision").
+                ASSERT_NEAR(c[k], d[k], 2.0f / 256.0f + 2.0f / 65280.0f) << uv.x << "," << uv.y;
             }
         }
         const std::vector<TexelImage> chain = mipmaps(ours);

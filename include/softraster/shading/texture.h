@@ -12,6 +12,14 @@
 // Which level: from the screen-space derivatives of (u, v) over the pixel's 2x2 quad (GL's
 // level of detail, computed as Mesa llvmpipe computes it; select_lod in texture.cpp).
 //
+// Precision: an 8-bit texture filters in fixed point, as llvmpipe filters 8-bit textures.
+// The sample point is cut to 1/256 of a texel, each channel is carried as value x 256 (0 to
+// 65280) through the bilinear and trilinear blends, and the weights are 8 bits (the level
+// weight too). Every step is exact but the floor in v - (v w >> 8) + (v' w >> 8). The result
+// differs from a float blend by less than 2/65280 for the same weights. Two kinds of texture
+// filter in float instead: an sRGB texture (its texels are decoded to linear light first) and
+// one with a border color.
+//
 // Anisotropic filtering (GL_TEXTURE_MAX_ANISOTROPY, EXT_texture_filter_anisotropic): where
 // the footprint is N times longer than wide (N up to the sampler's limit), N lookups along
 // its long axis, each at the level of detail of a footprint N times shorter, averaged.
@@ -23,6 +31,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
+#include <glm/ext/vector_int4.hpp>
 
 #include "softraster/image.h"
 #include "softraster/pipeline/simd.h"
@@ -68,6 +77,11 @@ struct LevelChoice {
 
 class Texture {
 public:
+    static constexpr int kMaxSide = 65536;  // texels a side, at most
+    // The fixed-point channel value (0 to 65280) to [0, 1]: times 1/255 as an 8-bit texel is
+    // converted, and 1/256 (exact), so that value x 256 gives the 8-bit conversion's bits.
+    static constexpr float kFixedToUnit = (1.0f / 255.0f) / 256.0f;
+
     // image row 0 is the top of the picture
     explicit Texture(const Image& image, ColorSpace color = ColorSpace::Linear);
 
@@ -121,6 +135,7 @@ private:
     std::vector<uint32_t> storage_;  // RGBA8 texels, r in the low byte
     size_t aligned_ = 0;              // index of the first texel: at a 64-byte boundary
     bool srgb_ = false;
+    bool pot_ = false;  // both sides powers of two (then every level's are)
     // The first 16 levels' numbers as lane tables (sample8 picks a level per lane with a
     // permute); entries past the last level repeat it.
     struct LevelTables {
@@ -128,6 +143,10 @@ private:
     } tables_{};
     template <Filter F>
     glm::vec4 sample_level(int level, glm::vec2 uv, const Sampler& s) const;
+    template <Filter F>
+    glm::ivec4 sample_level_fixed(int level, glm::vec2 uv, const Sampler& s) const;
+    // Whether a lookup filters in fixed point (above).
+    bool fixed_point(const Sampler& s) const { return !srgb_ && s.wrap_s != Wrap::Border && s.wrap_t != Wrap::Border; }
     template <bool Wide, bool Srgb>
     void sample_lanes(const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d, const Sampler& s,
                       std::array<simd::f8, 4>& rgba) const;
