@@ -127,15 +127,28 @@ Run add_animate_command(CLI::App& app) {
         if (frames > 1000000) throw InputError("--duration times --fps gives more than a million frames");
         const auto start = std::chrono::steady_clock::now();
         std::unique_ptr<AnimationWriter> writer;
+        // The output cannot be written (no room, no permission): the -o flag's error, as
+        // render reports it (write_output), not an internal one.
+        auto writing = [&](auto&& step) {
+            try {
+                step();
+            } catch (const InputError&) {
+                throw;
+            } catch (const std::runtime_error& e) {
+                throw InputError(e.what());
+            }
+        };
         Progress progress{size_t(frames), "frames"};
         render_in_order(frames, thread_count(opt->threads), [&](long k, unsigned threads) {
             return SceneRenderer(frame_at(scene, double(k) / opt->fps, turntable), threads).render();
         }, [&](long k, const Image& picture) {
-            if (!writer) writer = open_animation(out, picture.width, picture.height, opt->fps, scene.color_space);
-            writer->add(picture);
+            writing([&] {
+                if (!writer) writer = open_animation(out, picture.width, picture.height, opt->fps, scene.color_space);
+                writer->add(picture);
+            });
             progress.update(size_t(k + 1), "");
         });
-        writer->finish();
+        writing([&] { writer->finish(); });
         progress.clear();
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "wrote %s (%ld frames, %dx%d, %d fps) in %.1f s\n", out.string().c_str(), frames, scene.width, scene.height,

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <regex>
 #include <stdexcept>
 #include <vector>
@@ -108,20 +109,17 @@ public:
         int error = 0;
         const int fd = ::open(file_.temp().c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);  // (giflib's own open makes it 0600)
         if (fd < 0) throw std::runtime_error(out.string() + ": cannot write");
-        gif_ = EGifOpenFileHandle(fd, &error);
+        gif_.reset(EGifOpenFileHandle(fd, &error));
         if (!gif_) ::close(fd);
         if (!gif_) throw std::runtime_error(out.string() + ": cannot write: " + GifErrorString(error));
-        EGifSetGifVersion(gif_, true);
-        check(EGifPutScreenDesc(gif_, width, height, 8, 0, nullptr));
+        EGifSetGifVersion(gif_.get(), true);
+        check(EGifPutScreenDesc(gif_.get(), width, height, 8, 0, nullptr));
         // NETSCAPE2.0: loop forever.
         static const unsigned char kLoop[3] = {1, 0, 0};
-        check(EGifPutExtensionLeader(gif_, APPLICATION_EXT_FUNC_CODE));
-        check(EGifPutExtensionBlock(gif_, 11, "NETSCAPE2.0"));
-        check(EGifPutExtensionBlock(gif_, 3, kLoop));
-        check(EGifPutExtensionTrailer(gif_));
-    }
-    ~GifWriter() override {
-        if (gif_) EGifCloseFile(gif_, nullptr);
+        check(EGifPutExtensionLeader(gif_.get(), APPLICATION_EXT_FUNC_CODE));
+        check(EGifPutExtensionBlock(gif_.get(), 11, "NETSCAPE2.0"));
+        check(EGifPutExtensionBlock(gif_.get(), 3, kLoop));
+        check(EGifPutExtensionTrailer(gif_.get()));
     }
     void add(const Image& frame) override {
         liq_attr* attr = liq_attr_create();
@@ -150,17 +148,16 @@ public:
         gcb.DelayTime = int(std::lround(100.0 * (frames_ + 1) / fps_) - std::lround(100.0 * frames_ / fps_));
         GifByteType extension[4];
         const size_t n = EGifGCBToExtension(&gcb, extension);
-        const bool written = EGifPutExtension(gif_, GRAPHICS_EXT_FUNC_CODE, int(n), extension) == GIF_OK &&
-                             EGifPutImageDesc(gif_, 0, 0, width_, height_, false, map) == GIF_OK;
+        const bool written = EGifPutExtension(gif_.get(), GRAPHICS_EXT_FUNC_CODE, int(n), extension) == GIF_OK &&
+                             EGifPutImageDesc(gif_.get(), 0, 0, width_, height_, false, map) == GIF_OK;
         GifFreeMapObject(map);
         check(written ? GIF_OK : GIF_ERROR);
-        for (int y = 0; y < height_; ++y) check(EGifPutLine(gif_, indices.data() + size_t(y) * size_t(width_), width_));
+        for (int y = 0; y < height_; ++y) check(EGifPutLine(gif_.get(), indices.data() + size_t(y) * size_t(width_), width_));
         ++frames_;
     }
     void finish() override {
         int error = 0;
-        const int closed = EGifCloseFile(gif_, &error);
-        gif_ = nullptr;
+        const int closed = EGifCloseFile(gif_.release(), &error);
         if (closed != GIF_OK) throw std::runtime_error(file_.temp().string() + ": " + GifErrorString(error));
         file_.commit();
     }
@@ -169,9 +166,13 @@ private:
     void check(int status) const {
         if (status != GIF_OK) throw std::runtime_error(file_.temp().string() + ": " + GifErrorString(gif_->Error));
     }
+    // (Closed however the writer ends, a throw in the constructor included.)
+    struct Close {
+        void operator()(GifFileType* g) const { EGifCloseFile(g, nullptr); }
+    };
     PendingFile file_;
     int width_, height_, fps_;
-    GifFileType* gif_ = nullptr;
+    std::unique_ptr<GifFileType, Close> gif_;
     int frames_ = 0;
 };
 
@@ -188,95 +189,103 @@ public:
         const AVCodec* codec = webm ? avcodec_find_encoder_by_name("libvpx-vp9") : avcodec_find_encoder_by_name("libx264");
         if (!codec) codec = avcodec_find_encoder(webm ? AV_CODEC_ID_VP8 : AV_CODEC_ID_MPEG4);
         if (!codec) throw std::runtime_error(out.string() + ": FFmpeg has no encoder for this format");
-        if (avformat_alloc_output_context2(&format_, nullptr, webm ? "webm" : "mp4", file_.temp().c_str()) < 0 || !format_)
+        if (avformat_alloc_output_context2(&av_.format, nullptr, webm ? "webm" : "mp4", file_.temp().c_str()) < 0 || !av_.format)
             throw std::runtime_error(out.string() + ": FFmpeg cannot write this format");
-        stream_ = avformat_new_stream(format_, nullptr);
-        codec_ = avcodec_alloc_context3(codec);
-        if (!stream_ || !codec_) throw std::runtime_error(out.string() + ": out of memory");
-        codec_->width = width;
-        codec_->height = height;
-        codec_->time_base = AVRational{1, fps};
-        codec_->framerate = AVRational{fps, 1};
-        codec_->pix_fmt = AV_PIX_FMT_YUV420P;
-        codec_->gop_size = 2 * fps;
+        stream_ = avformat_new_stream(av_.format, nullptr);
+        av_.codec = avcodec_alloc_context3(codec);
+        if (!stream_ || !av_.codec) throw std::runtime_error(out.string() + ": out of memory");
+        av_.codec->width = width;
+        av_.codec->height = height;
+        av_.codec->time_base = AVRational{1, fps};
+        av_.codec->framerate = AVRational{fps, 1};
+        av_.codec->pix_fmt = AV_PIX_FMT_YUV420P;
+        av_.codec->gop_size = 2 * fps;
         // No B-frames: frames then leave the encoder in order, and MP4's edit list (which
         // reorder delay needs) would cut the last frame short in some players and probes.
-        codec_->max_b_frames = 0;
-        codec_->colorspace = AVCOL_SPC_SMPTE170M;
-        codec_->color_range = AVCOL_RANGE_MPEG;
-        if (format_->oformat->flags & AVFMT_GLOBALHEADER) codec_->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+        av_.codec->max_b_frames = 0;
+        av_.codec->colorspace = AVCOL_SPC_SMPTE170M;
+        av_.codec->color_range = AVCOL_RANGE_MPEG;
+        if (av_.format->oformat->flags & AVFMT_GLOBALHEADER) av_.codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
         if (codec->id == AV_CODEC_ID_H264) {
-            av_opt_set(codec_->priv_data, "preset", "medium", 0);
-            av_opt_set(codec_->priv_data, "crf", "18", 0);
+            av_opt_set(av_.codec->priv_data, "preset", "medium", 0);
+            av_opt_set(av_.codec->priv_data, "crf", "18", 0);
         } else if (codec->id == AV_CODEC_ID_VP9 || codec->id == AV_CODEC_ID_VP8) {
-            av_opt_set(codec_->priv_data, "crf", "24", 0);
-            codec_->bit_rate = 0;
-            av_opt_set(codec_->priv_data, "deadline", "good", 0);
-            av_opt_set(codec_->priv_data, "cpu-used", "4", 0);
+            av_opt_set(av_.codec->priv_data, "crf", "24", 0);
+            av_.codec->bit_rate = 0;
+            av_opt_set(av_.codec->priv_data, "deadline", "good", 0);
+            av_opt_set(av_.codec->priv_data, "cpu-used", "4", 0);
         } else {
-            codec_->bit_rate = int64_t(width) * height * fps / 4;
+            av_.codec->bit_rate = int64_t(width) * height * fps / 4;
         }
-        if (avcodec_open2(codec_, codec, nullptr) < 0) throw std::runtime_error(out.string() + ": cannot open the encoder");
-        if (avcodec_parameters_from_context(stream_->codecpar, codec_) < 0) throw std::runtime_error(out.string() + ": encoder parameters");
-        stream_->time_base = codec_->time_base;
-        if (avio_open(&format_->pb, file_.temp().c_str(), AVIO_FLAG_WRITE) < 0) throw std::runtime_error(out.string() + ": cannot write");
-        if (avformat_write_header(format_, nullptr) < 0) throw std::runtime_error(out.string() + ": cannot write the header");
-        frame_ = av_frame_alloc();
-        packet_ = av_packet_alloc();
-        if (!frame_ || !packet_) throw std::runtime_error(out.string() + ": out of memory");
-        frame_->format = codec_->pix_fmt;
-        frame_->width = width;
-        frame_->height = height;
-        if (av_frame_get_buffer(frame_, 0) < 0) throw std::runtime_error(out.string() + ": out of memory");
-        scale_ = sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr, nullptr);
-        if (!scale_) throw std::runtime_error(out.string() + ": cannot convert RGBA to YUV");
-    }
-    ~VideoWriter() override {
-        sws_freeContext(scale_);
-        av_packet_free(&packet_);
-        av_frame_free(&frame_);
-        avcodec_free_context(&codec_);
-        if (format_) {
-            if (format_->pb) avio_closep(&format_->pb);
-            avformat_free_context(format_);
-        }
+        if (avcodec_open2(av_.codec, codec, nullptr) < 0) throw std::runtime_error(out.string() + ": cannot open the encoder");
+        if (avcodec_parameters_from_context(stream_->codecpar, av_.codec) < 0) throw std::runtime_error(out.string() + ": encoder parameters");
+        stream_->time_base = av_.codec->time_base;
+        if (avio_open(&av_.format->pb, file_.temp().c_str(), AVIO_FLAG_WRITE) < 0) throw std::runtime_error(out.string() + ": cannot write");
+        if (avformat_write_header(av_.format, nullptr) < 0) throw std::runtime_error(out.string() + ": cannot write the header");
+        av_.frame = av_frame_alloc();
+        av_.packet = av_packet_alloc();
+        if (!av_.frame || !av_.packet) throw std::runtime_error(out.string() + ": out of memory");
+        av_.frame->format = av_.codec->pix_fmt;
+        av_.frame->width = width;
+        av_.frame->height = height;
+        if (av_frame_get_buffer(av_.frame, 0) < 0) throw std::runtime_error(out.string() + ": out of memory");
+        av_.scale = sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr, nullptr);
+        if (!av_.scale) throw std::runtime_error(out.string() + ": cannot convert RGBA to YUV");
     }
     void add(const Image& frame) override {
-        if (av_frame_make_writable(frame_) < 0) throw std::runtime_error(file_.temp().string() + ": frame buffer");
+        if (av_frame_make_writable(av_.frame) < 0) throw std::runtime_error(file_.temp().string() + ": frame buffer");
         const uint8_t* source[1] = {reinterpret_cast<const uint8_t*>(frame.pixels.data())};
         const int stride[1] = {4 * width_};
-        sws_scale(scale_, source, stride, 0, height_, frame_->data, frame_->linesize);
-        frame_->pts = next_pts_++;
-        encode(frame_);
+        sws_scale(av_.scale, source, stride, 0, height_, av_.frame->data, av_.frame->linesize);
+        av_.frame->pts = next_pts_++;
+        encode(av_.frame);
     }
     void finish() override {
         encode(nullptr);
-        if (av_write_trailer(format_) < 0) throw std::runtime_error(file_.temp().string() + ": cannot finish the file");
-        avio_closep(&format_->pb);
+        if (av_write_trailer(av_.format) < 0) throw std::runtime_error(file_.temp().string() + ": cannot finish the file");
+        avio_closep(&av_.format->pb);
         file_.commit();
     }
 
 private:
     void encode(AVFrame* frame) {
-        if (avcodec_send_frame(codec_, frame) < 0) throw std::runtime_error(file_.temp().string() + ": the encoder refused a frame");
+        if (avcodec_send_frame(av_.codec, frame) < 0) throw std::runtime_error(file_.temp().string() + ": the encoder refused a frame");
         for (;;) {
-            const int r = avcodec_receive_packet(codec_, packet_);
+            const int r = avcodec_receive_packet(av_.codec, av_.packet);
             if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return;
             if (r < 0) throw std::runtime_error(file_.temp().string() + ": encoding failed");
-            packet_->duration = 1;  // one frame (some encoders leave it 0: MP4 then ends at the last frame's start)
-            av_packet_rescale_ts(packet_, codec_->time_base, stream_->time_base);
-            packet_->stream_index = stream_->index;
-            if (av_interleaved_write_frame(format_, packet_) < 0) throw std::runtime_error(file_.temp().string() + ": cannot write a frame");
+            av_.packet->duration = 1;  // one frame (some encoders leave it 0: MP4 then ends at the last frame's start)
+            av_packet_rescale_ts(av_.packet, av_.codec->time_base, stream_->time_base);
+            av_.packet->stream_index = stream_->index;
+            if (av_interleaved_write_frame(av_.format, av_.packet) < 0) throw std::runtime_error(file_.temp().string() + ": cannot write a frame");
         }
     }
+    // FFmpeg's objects, freed however the writer ends (a throw in the constructor included:
+    // then only this member's destructor runs, not the writer's).
+    struct Contexts {
+        AVFormatContext* format = nullptr;
+        AVCodecContext* codec = nullptr;
+        AVFrame* frame = nullptr;
+        AVPacket* packet = nullptr;
+        SwsContext* scale = nullptr;
+        Contexts() = default;
+        Contexts(const Contexts&) = delete;
+        Contexts& operator=(const Contexts&) = delete;
+        ~Contexts() {
+            sws_freeContext(scale);
+            av_packet_free(&packet);
+            av_frame_free(&frame);
+            avcodec_free_context(&codec);
+            if (format) {
+                if (format->pb) avio_closep(&format->pb);
+                avformat_free_context(format);
+            }
+        }
+    };
     PendingFile file_;
     int width_, height_;
-    AVFormatContext* format_ = nullptr;
-    AVStream* stream_ = nullptr;
-    AVCodecContext* codec_ = nullptr;
-    AVFrame* frame_ = nullptr;
-    AVPacket* packet_ = nullptr;
-    SwsContext* scale_ = nullptr;
+    Contexts av_;
+    AVStream* stream_ = nullptr;  // (owned by av_.format)
     int64_t next_pts_ = 0;
 };
 
@@ -294,7 +303,12 @@ std::string numbered_frame(const std::string& pattern, int k) {
     return name;
 }
 
-void check_animation_path(const std::filesystem::path& out) { kind_of(out); }
+void check_animation_path(const std::filesystem::path& out) {
+    // A single file goes into a folder that must exist (numbered pictures make theirs).
+    std::error_code ec;
+    if (kind_of(out) != Kind::Numbered && out.has_parent_path() && !std::filesystem::is_directory(out.parent_path(), ec))
+        throw InputError(out.string() + ": output folder '" + out.parent_path().string() + "' does not exist");
+}
 
 std::unique_ptr<AnimationWriter> open_animation(const std::filesystem::path& out, int width, int height, int fps, ColorSpace color) {
     if (fps < 1) throw InputError("frames per second must be at least 1");
