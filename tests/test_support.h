@@ -4,6 +4,7 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <string>
 #include <span>
@@ -16,8 +17,19 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "softraster/context.h"
+#include "softraster/error.h"
 
 namespace softraster::test {
+
+// The message of the InputError that f throws, or "" when it throws none.
+inline std::string error_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
 
 // Each component of a within eps of b's.
 inline void expect_near(const glm::vec3& a, const glm::vec3& b, float eps) {

@@ -118,10 +118,7 @@ int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::Ap
         const Scene scene = frame_scene(loaded, view);
         const SceneRenderer renderer(scene, thread_count(options.threads));
         const auto start = std::chrono::steady_clock::now();
-        if (fb && (fb->width() != scene.width * scene.supersample || fb->height() != scene.height * scene.supersample ||
-                   fb->samples() != scene.samples || fb->color_space() != scene.color_space))
-            fb.reset();
-        if (!fb) fb.emplace(renderer.make_framebuffer());
+        if (!fb || !renderer.fits(*fb)) fb.emplace(renderer.make_framebuffer());
         renderer.render(*fb);
         back = renderer.resolve(*fb);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

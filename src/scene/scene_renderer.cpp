@@ -377,6 +377,11 @@ Framebuffer SceneRenderer::make_framebuffer() const {
     return Framebuffer(scene_.width * scene_.supersample, scene_.height * scene_.supersample, scene_.samples, scene_.color_space);
 }
 
+bool SceneRenderer::fits(const Framebuffer& fb) const {
+    return fb.width() == scene_.width * scene_.supersample && fb.height() == scene_.height * scene_.supersample &&
+           fb.samples() == scene_.samples && fb.color_space() == scene_.color_space;
+}
+
 Image SceneRenderer::resolve(const Framebuffer& fb) const {
     Image picture = fb.read_pixels();
     if (occlusion_) {

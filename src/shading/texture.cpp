@@ -61,6 +61,16 @@ inline int probe_count(float rmax, float rmin, int max_anisotropy) {
     return n;
 }
 
+// The texel indices of a bilinear footprint whose lower-left texel is (i0, j0), each wrapped
+// (-1: the border color).
+struct Footprint {
+    int ia, ib, ja, jb;
+};
+inline Footprint footprint(int i0, int j0, int width, int height, const Sampler& s) {
+    return {detail::wrap_texel(i0, width, s.wrap_s), detail::wrap_texel(i0 + 1, width, s.wrap_s), detail::wrap_texel(j0, height, s.wrap_t),
+            detail::wrap_texel(j0 + 1, height, s.wrap_t)};
+}
+
 }  // namespace
 
 Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpace::Srgb) {
@@ -150,10 +160,9 @@ glm::vec4 Texture::sample_level(int level, glm::vec2 uv, const Sampler& s) const
         const float x = u - 0.5f, y = v - 0.5f;
         const int i0 = detail::floor_to_int(x), j0 = detail::floor_to_int(y);
         const float fx = x - float(i0), fy = y - float(j0);
-        const int ia = detail::wrap_texel(i0, l.width, s.wrap_s), ib = detail::wrap_texel(i0 + 1, l.width, s.wrap_s);
-        const int ja = detail::wrap_texel(j0, l.height, s.wrap_t), jb = detail::wrap_texel(j0 + 1, l.height, s.wrap_t);
-        const glm::vec4 bottom = fetch(ia, ja) * (1.0f - fx) + fetch(ib, ja) * fx;
-        const glm::vec4 top = fetch(ia, jb) * (1.0f - fx) + fetch(ib, jb) * fx;
+        const Footprint f = footprint(i0, j0, l.width, l.height, s);
+        const glm::vec4 bottom = fetch(f.ia, f.ja) * (1.0f - fx) + fetch(f.ib, f.ja) * fx;
+        const glm::vec4 top = fetch(f.ia, f.jb) * (1.0f - fx) + fetch(f.ib, f.jb) * fx;
         return bottom * (1.0f - fy) + top * fy;
     }
 }
@@ -172,10 +181,9 @@ glm::ivec4 Texture::sample_level_fixed(int level, glm::vec2 uv, const Sampler& s
     const int x = detail::floor_to_int((detail::reduce(uv.x, s.wrap_s) * float(l.width) - half) * 256.0f);
     const int y = detail::floor_to_int((detail::reduce(uv.y, s.wrap_t) * float(l.height) - half) * 256.0f);
     const int fx = F == Filter::Nearest ? 0 : x & 255, fy = F == Filter::Nearest ? 0 : y & 255;
-    const int ia = detail::wrap_texel(x >> 8, l.width, s.wrap_s), ib = detail::wrap_texel((x >> 8) + 1, l.width, s.wrap_s);
-    const int ja = detail::wrap_texel(y >> 8, l.height, s.wrap_t), jb = detail::wrap_texel((y >> 8) + 1, l.height, s.wrap_t);
-    const uint32_t a = texels()[texel_index(l, ia, ja)], b = texels()[texel_index(l, ib, ja)];
-    const uint32_t c = texels()[texel_index(l, ia, jb)], d = texels()[texel_index(l, ib, jb)];
+    const Footprint f = footprint(x >> 8, y >> 8, l.width, l.height, s);
+    const uint32_t a = texels()[texel_index(l, f.ia, f.ja)], b = texels()[texel_index(l, f.ib, f.ja)];
+    const uint32_t c = texels()[texel_index(l, f.ia, f.jb)], d = texels()[texel_index(l, f.ib, f.jb)];
     glm::ivec4 r;
     for (int k = 0; k < 4; ++k) {
         auto channel = [k](uint32_t t) { return int((t >> (8 * k)) & 255u); };

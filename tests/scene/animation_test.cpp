@@ -47,12 +47,7 @@ std::string scene_text(const std::string& object, const std::string& camera = ""
 }
 
 std::string error_of(const std::string& text) {
-    try {
-        load_scene(write("bad.json", text));
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::error_of([&] { load_scene(write("bad.json", text)); });
 }
 
 }  // namespace

@@ -20,14 +20,7 @@ std::filesystem::path write_temp(const std::string& name, const std::string& con
     return test::write_temp_file("softraster_mesh_tests", name, contents);
 }
 
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using test::error_of;
 
 template <class T>
 std::string bytes_of(T v, bool big_endian) {

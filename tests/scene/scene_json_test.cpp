@@ -25,12 +25,7 @@ const char* kMinimal = R"({"version": 1, "image": {"width": 32, "height": 16},
   "camera": {"eye": [0, 0, 3], "target": [0, 0, 0]}, "objects": [{"builtin": {"type": "cube"}}]})";
 
 std::string error_of(const std::string& json) {
-    try {
-        load_scene(write_scene("bad.json", json));
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::error_of([&] { load_scene(write_scene("bad.json", json)); });
 }
 
 std::string with(const std::string& from, const std::string& to) {
@@ -196,6 +191,15 @@ TEST(SceneJson, ColorSpaceAndToneMapping) {
     EXPECT_EQ(s.tone_mapping.curve, ToneCurve::Aces);
     EXPECT_EQ(s.tone_mapping.exposure, 2.5f);
     EXPECT_TRUE(SceneRenderer(s, 1).make_framebuffer().srgb());
+    // A framebuffer is reused (view) only where it fits: the same size, samples and color space.
+    EXPECT_TRUE(SceneRenderer(s, 1).fits(SceneRenderer(s, 1).make_framebuffer()));
+    EXPECT_FALSE(SceneRenderer(s, 1).fits(SceneRenderer(plain, 1).make_framebuffer()));  // linear
+    Scene wider = s;
+    wider.width += 2;
+    EXPECT_FALSE(SceneRenderer(wider, 1).fits(SceneRenderer(s, 1).make_framebuffer()));
+    Scene supersampled = s;
+    supersampled.supersample = 2;
+    EXPECT_FALSE(SceneRenderer(supersampled, 1).fits(SceneRenderer(s, 1).make_framebuffer()));
 
     const auto dir = test::write_temp_file("softraster_scene_tests", "tex.png", "").parent_path();
     Image img(2, 2);

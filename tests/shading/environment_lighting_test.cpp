@@ -101,12 +101,7 @@ TEST(EnvironmentLighting, ReadsRadianceHdr) {
     EXPECT_EQ(m.at(0, 0), glm::vec3(1.0f));
     EXPECT_EQ(m.at(1, 1), glm::vec3(2.0f, 1.0f, 0.5f));  // (128, 64, 32) / 256 * 2^(130 - 128)
     auto error_of = [](const std::string& name, const std::string& contents) {
-        try {
-            read_environment(test::write_temp_file("softraster_env_tests", name, contents));
-        } catch (const InputError& e) {
-            return std::string(e.what());
-        }
-        return std::string();
+        return test::error_of([&] { read_environment(test::write_temp_file("softraster_env_tests", name, contents)); });
     };
     EXPECT_NE(error_of("cut.hdr", bytes.substr(0, bytes.size() - 9)).find("cut.hdr: corrupt Radiance HDR"), std::string::npos);
     EXPECT_NE(error_of("sky.png", bytes).find("sky.png: an environment is an .hdr or .exr picture"), std::string::npos);

@@ -37,6 +37,8 @@ public:
     RenderStats render(Framebuffer& fb) const;
     // A framebuffer for render(fb): the scene's size times its supersampling factor, and its samples.
     Framebuffer make_framebuffer() const;
+    // Whether fb is such a framebuffer (size, samples, color space), so that it can be reused.
+    bool fits(const Framebuffer& fb) const;
     // The picture of a rendered framebuffer: the MSAA resolve, ambient occlusion, then the
     // supersampling box filter.
     Image resolve(const Framebuffer& fb) const;
