@@ -87,7 +87,7 @@ void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size) {
         ->check(CLI::Range(1e-6, 1e6))
         ->capture_default_str();
     cmd.add_flag("--shadows", opt.shadows,
-                 "Shadow maps for the key light, or the file's directional and spot lights (at most 4)");
+                 "Shadow maps for the key light, or the file's lights (at most 4)");
     cmd.add_flag("--ssao", opt.ambient_occlusion, "Screen-space ambient occlusion: creases and contacts darken (radius a tenth of the model's)");
     cmd.add_option("--anisotropy", opt.anisotropy, "Anisotropic filtering: up to this many texture lookups along a stretched footprint (1 to 16)")
         ->check(CLI::Range(1, 16))

@@ -96,7 +96,7 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
         for (DirectionalLight& l : scene.lights.directional)
             if (picture.shadows && shadowed < Lights::kMaxShadowed) l.shadow = shadow, ++shadowed;
         for (PunctualLight& l : scene.lights.punctual)
-            if (picture.shadows && l.spot && l.outer_angle <= 80.0f && shadowed < Lights::kMaxShadowed) l.shadow = shadow, ++shadowed;
+            if (picture.shadows && (!l.spot || l.outer_angle <= 80.0f) && shadowed < Lights::kMaxShadowed) l.shadow = shadow, ++shadowed;
         return scene;
     }
     scene.lights.ambient = glm::vec3(0.25f);

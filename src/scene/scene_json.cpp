@@ -202,7 +202,7 @@ struct Loader {
     // A point or spot light (docs/scene-format.md "Lights").
     PunctualLight read_punctual(const Node& d, bool spot, const Lights& lights) {
         if (spot) d.expect_object({"position", "direction", "color", "intensity", "range", "inner_angle", "outer_angle", "shadow"});
-        else d.expect_object({"position", "color", "intensity", "range"});  // no shadow: point lights would need a cube map
+        else d.expect_object({"position", "color", "intensity", "range", "shadow"});
         PunctualLight light;
         light.spot = spot;
         light.position = d["position"].vec3();
@@ -215,11 +215,10 @@ struct Loader {
             if (d.has("inner_angle")) light.inner_angle = float(d["inner_angle"].number_in(0, 90, false, false, "in [0, 90]"));
             if (!(light.inner_angle < light.outer_angle))
                 (d.has("inner_angle") ? d["inner_angle"] : d["outer_angle"]).fail("inner_angle must be less than outer_angle");
-            if (d.has("shadow")) {
-                if (light.outer_angle > 80.0f) d["outer_angle"].fail("a spot light with a shadow has outer_angle at most 80");
-                light.shadow = read_shadow(d["shadow"], lights);
-            }
+            if (d.has("shadow") && light.outer_angle > 80.0f)
+                d["outer_angle"].fail("a spot light with a shadow has outer_angle at most 80");
         }
+        if (d.has("shadow")) light.shadow = read_shadow(d["shadow"], lights);  // a point light's: a cube map
         return light;
     }
 

@@ -193,25 +193,30 @@ struct DepthPass {
 
 }  // namespace
 
-// A light's shadow map: the depth of the nearest caster per texel, seen through S
-// (shadow_matrix), filled by a depth pass of the scene's opaque triangles before each frame.
+// A light's shadow map: the depth of the nearest caster per texel, seen through each face's
+// S (shadow_matrix), filled by a depth pass of the scene's opaque triangles before each frame.
 struct SceneRenderer::ShadowPass {
-    DepthPass pass;
+    std::vector<DepthPass> faces;  // one, or a point light's six
     ShadowMap map;
 
-    // Both faces cast, pushed back by the slope of the caster.
-    ShadowPass(const Scene& scene, const ShadowSettings& s, const glm::mat4& matrix, const glm::vec3& travel)
-        : pass(scene, s.size, s.size, glm::dmat4(matrix), [&](const SceneObject&) {
-              RenderState st;
-              st.cull = CullMode::None;
-              st.polygon_offset_factor = s.slope_bias;
-              return st;
-          }) {
-        map.depth = pass.fb.depth_data();
+    explicit ShadowPass(const ShadowSettings& s) {
         map.size = s.size;
-        map.matrix = matrix;
-        map.offset = glm::vec3(-double(s.bias) * glm::normalize(glm::dvec3(travel)));
         map.pcf = s.pcf;
+    }
+    // A face seen through `matrix`; b is the bias along `travel`, the way the light goes.
+    // Both faces of the casters cast, pushed back by their slope.
+    void add_face(const Scene& scene, const ShadowSettings& s, const glm::mat4& matrix, const glm::vec3& travel) {
+        DepthPass& pass = faces.emplace_back(scene, s.size, s.size, glm::dmat4(matrix), [&](const SceneObject&) {
+            RenderState st;
+            st.cull = CullMode::None;
+            st.polygon_offset_factor = s.slope_bias;
+            return st;
+        });
+        ShadowFace& f = map.face[faces.size() - 1];
+        f.depth = pass.fb.depth_data();
+        f.matrix = matrix;
+        f.offset = glm::vec3(-double(s.bias) * glm::normalize(glm::dvec3(travel)));
+        map.faces = int(faces.size());
     }
 };
 
@@ -250,17 +255,29 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     // (The bounds walk every vertex: only scenes with a shadow pay for them.)
     std::optional<Bounds> scene_bounds;
     auto bounds = [&]() -> const Bounds& { return scene_bounds ? *scene_bounds : scene_bounds.emplace(shadow_bounds(scene)); };
-    auto add_shadow = [&](const ShadowSettings& s, const glm::mat4& matrix, const glm::vec3& travel) {
-        shadow_passes_.push_back(std::make_unique<ShadowPass>(scene, s, matrix, travel));
-        lights.shadows[size_t(lights.shadow_count)] = &shadow_passes_.back()->map;
-        return lights.shadow_count++;
+    auto add_shadow = [&](const ShadowSettings& s) -> ShadowPass& {
+        shadow_passes_.push_back(std::make_unique<ShadowPass>(s));
+        shadow_passes_.back()->faces.reserve(6);  // (the maps point into the passes' framebuffers)
+        lights.shadows[size_t(lights.shadow_count++)] = &shadow_passes_.back()->map;
+        return *shadow_passes_.back();
     };
     for (size_t i = 0; i < scene.lights.directional.size() && i < size_t(LightSet::kMax); ++i)
-        if (const DirectionalLight& l = scene.lights.directional[i]; l.shadow)
-            lights.shadow_of[i] = add_shadow(*l.shadow, shadow_matrix(l, bounds()), l.direction);
-    for (size_t i = 0; i < scene.lights.punctual.size(); ++i)
-        if (const PunctualLight& l = scene.lights.punctual[i]; l.shadow && l.spot)
-            positional_lights_[i].shadow = add_shadow(*l.shadow, shadow_matrix(l, bounds()), l.direction);
+        if (const DirectionalLight& l = scene.lights.directional[i]; l.shadow) {
+            add_shadow(*l.shadow).add_face(scene, *l.shadow, shadow_matrix(l, bounds()), l.direction);
+            lights.shadow_of[i] = lights.shadow_count - 1;
+        }
+    for (size_t i = 0; i < scene.lights.punctual.size(); ++i) {
+        const PunctualLight& l = scene.lights.punctual[i];
+        if (!l.shadow) continue;
+        ShadowPass& shadow = add_shadow(*l.shadow);
+        if (l.spot) {
+            shadow.add_face(scene, *l.shadow, shadow_matrix(l, bounds()), l.direction);
+        } else {  // a cube, each face's bias along its axis (the depth it stores grows along it)
+            for (int f = 0; f < 6; ++f) shadow.add_face(scene, *l.shadow, shadow_matrix(l, bounds(), f), cube_face_axis(f));
+            shadow.map.light = l.position;
+        }
+        positional_lights_[i].shadow = lights.shadow_count - 1;
+    }
     if (scene.ambient_occlusion) {
         const int k = scene.supersample;
         occlusion_ = std::make_unique<OcclusionPass>(OcclusionPass{
@@ -360,7 +377,8 @@ size_t SceneRenderer::triangle_count() const {
 }
 
 RenderStats SceneRenderer::render(Framebuffer& fb) const {
-    for (const auto& shadow : shadow_passes_) shadow->pass.render(pool_.get());
+    for (const auto& shadow : shadow_passes_)
+        for (DepthPass& face : shadow->faces) face.render(pool_.get());
     if (occlusion_) occlusion_->pass.render(pool_.get());
     if (!ctx_) {
         ctx_ = std::make_unique<Context>(fb, pool_.get());

@@ -53,6 +53,19 @@ Bounds shadow_bounds(const Scene& scene) {
 namespace {
 // The light's up vector for lookAt: +y, or +z when the light is within about 8 degrees of vertical.
 glm::dvec3 shadow_up(const glm::dvec3& d) { return std::abs(d.y) > 0.99 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0); }
+
+// Perspective from the light's position p along D, fov degrees wide; far reaches the
+// bounds' farthest corner (times 1.01), near is far / 100.
+glm::mat4 light_perspective(const glm::dvec3& p, const glm::dvec3& d, double fov, const Bounds& b) {
+    double far = 1e-3;
+    for (int k = 0; k < 8 && !b.empty(); ++k) {
+        const glm::dvec3 corner((k & 1 ? b.hi : b.lo).x, (k & 2 ? b.hi : b.lo).y, (k & 4 ? b.hi : b.lo).z);
+        far = std::max(far, glm::length(corner - p));
+    }
+    far *= 1.01;
+    const glm::dmat4 view = glm::lookAtRH(p, p + d, shadow_up(d));
+    return glm::mat4(glm::perspectiveRH_NO(glm::radians(fov), 1.0, far / 100.0, far) * view);
+}
 }  // namespace
 
 // Orthographic, around the bounds' sphere (center c, radius r): the eye 2r behind c.
@@ -64,18 +77,21 @@ glm::mat4 shadow_matrix(const DirectionalLight& light, const Bounds& b) {
     return glm::mat4(glm::orthoRH_NO(-r, r, -r, r, r, 3.0 * r) * view);
 }
 
-// Perspective along the cone's axis, 2 x outer_angle wide; far reaches the bounds' farthest
-// corner (times 1.01), near is far / 100.
+// A spot light: along the cone's axis, 2 x outer_angle wide.
 glm::mat4 shadow_matrix(const PunctualLight& light, const Bounds& b) {
-    const glm::dvec3 p(light.position), d = glm::normalize(glm::dvec3(light.direction));
-    double far = 1e-3;
-    for (int k = 0; k < 8 && !b.empty(); ++k) {
-        const glm::dvec3 corner((k & 1 ? b.hi : b.lo).x, (k & 2 ? b.hi : b.lo).y, (k & 4 ? b.hi : b.lo).z);
-        far = std::max(far, glm::length(corner - p));
-    }
-    far *= 1.01;
-    const glm::dmat4 view = glm::lookAtRH(p, p + d, shadow_up(d));
-    return glm::mat4(glm::perspectiveRH_NO(glm::radians(2.0 * double(light.outer_angle)), 1.0, far / 100.0, far) * view);
+    return light_perspective(glm::dvec3(light.position), glm::normalize(glm::dvec3(light.direction)),
+                             2.0 * double(light.outer_angle), b);
+}
+
+glm::vec3 cube_face_axis(int face) {
+    glm::vec3 a(0.0f);
+    a[face / 2] = face % 2 ? -1.0f : 1.0f;
+    return a;
+}
+
+// A point light's cube face: 90 degrees wide, so the six frusta meet edge to edge.
+glm::mat4 shadow_matrix(const PunctualLight& light, const Bounds& b, int face) {
+    return light_perspective(glm::dvec3(light.position), glm::dvec3(cube_face_axis(face)), 90.0, b);
 }
 
 }  // namespace softraster

@@ -149,23 +149,34 @@ uniform int u_shadow_of[8];  // directional light i's map, or SHADOWS for none
 uniform int u_pl_shadow[POSITIONAL];
 #endif
 #if SHADOWS > 0
-uniform mat4 u_shadow_matrix[SHADOWS];
-uniform vec3 u_shadow_offset[SHADOWS];  // bias toward the light
+uniform mat4 u_shadow_matrix[SHADOWS * 6];  // map s's face f: s * 6 + f
+uniform vec3 u_shadow_offset[SHADOWS * 6];  // bias toward the light
+uniform int u_shadow_faces[SHADOWS];        // 1, or a point light's cube: 6
+uniform vec3 u_shadow_light[SHADOWS];       // a cube's center
 uniform int u_shadow_size[SHADOWS];
 uniform int u_shadow_pcf[SHADOWS];
-uniform sampler2D u_shadow_map0;
+uniform sampler2DArray u_shadow_map0;
 #if SHADOWS > 1
-uniform sampler2D u_shadow_map1;
+uniform sampler2DArray u_shadow_map1;
 #endif
 #if SHADOWS > 2
-uniform sampler2D u_shadow_map2;
+uniform sampler2DArray u_shadow_map2;
 #endif
 #if SHADOWS > 3
-uniform sampler2D u_shadow_map3;
+uniform sampler2DArray u_shadow_map3;
 #endif
-float shadow_visibility(sampler2D map, int s, vec3 p) {
-    vec3 b = p + u_shadow_offset[s];
-    mat4 m = u_shadow_matrix[s];
+// A cube's face: the major axis of P - light, x before y before z on ties, + where >= 0.
+int shadow_face(int s, vec3 p) {
+    if (u_shadow_faces[s] == 1) return 0;
+    vec3 d = p - u_shadow_light[s], a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
+    if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
+    return d.z >= 0.0 ? 4 : 5;
+}
+float shadow_visibility(sampler2DArray map, int s, vec3 p) {
+    int f = shadow_face(s, p);
+    vec3 b = p + u_shadow_offset[s * 6 + f];
+    mat4 m = u_shadow_matrix[s * 6 + f];
     vec4 q = ((m[0] * b.x + m[1] * b.y) + m[2] * b.z) + m[3];
     if (!(q.w > 0.0)) return 1.0;
     float iw = 1.0 / q.w, half_size = 0.5 * float(u_shadow_size[s]);
@@ -177,7 +188,7 @@ float shadow_visibility(sampler2D map, int s, vec3 p) {
     int lit = 0;
     for (int dj = -r; dj <= r; ++dj)
         for (int di = -r; di <= r; ++di)
-            if (z <= texelFetch(map, ivec2(clamp(i + di, 0, last), clamp(j + dj, 0, last)), 0).r) ++lit;
+            if (z <= texelFetch(map, ivec3(clamp(i + di, 0, last), clamp(j + dj, 0, last), f), 0).r) ++lit;
     return float(lit) * (1.0 / float((2 * r + 1) * (2 * r + 1)));
 }
 #endif

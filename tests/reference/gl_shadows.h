@@ -1,7 +1,8 @@
 // The reference's shadow maps (docs/scene-format.md "Shadows"): per shadowed light a
-// GL_DEPTH_COMPONENT32F texture filled by a depth pass with glPolygonOffset(slope_bias, 0),
-// both faces, from the light's matrix S (softraster::shadow_matrix, shared with the scene
-// loader as the camera's matrices are). The fragment shader reads the texels with texelFetch
+// GL_DEPTH_COMPONENT32F array texture, one layer per face (a point light's cube has six),
+// each filled by a depth pass with glPolygonOffset(slope_bias, 0), both faces, from the
+// face's matrix S (softraster::shadow_matrix, shared with the scene loader as the camera's
+// matrices are). The fragment shader reads the texels with texelFetch
 // and compares them itself (gl_shaders.cpp, shadow_visibility), as the spec's PCF does.
 #pragma once
 #include <string>
@@ -40,14 +41,19 @@ public:
     void bind(GLuint program) const;
 
 private:
-    struct Map {
-        softraster::ShadowSettings settings;
+    struct Face {
         glm::mat4 matrix{1.0f};
         glm::vec3 offset{0.0f};
-        GLuint texture = 0, fbo = 0;
+        GLuint fbo = 0;  // its layer of the texture
     };
-    std::vector<Map> maps_;                  // directional lights first, then spot lights
-    std::vector<int> directional_, spot_;    // each light's map, or count() for none
+    struct Map {
+        softraster::ShadowSettings settings;
+        std::vector<Face> faces;  // one, or a cube's six (+x, -x, +y, -y, +z, -z)
+        glm::vec3 light{0.0f};    // a cube's center
+        GLuint texture = 0;
+    };
+    std::vector<Map> maps_;                  // directional lights first, then point and spot lights
+    std::vector<int> directional_, punctual_;  // each light's map, or count() for none
     GLuint program_ = 0;                     // the depth pass's
 };
 

@@ -54,6 +54,12 @@ TEST(ModelMaterials, GltfLightsArePlacedByTheirNodes) {
     const Scene s = model_scene(m, ModelPicture{});
     EXPECT_EQ(s.lights.punctual.size(), 2u);
     EXPECT_EQ(s.lights.directional.size(), 1u);
+    EXPECT_FALSE(s.lights.punctual[0].shadow || s.lights.punctual[1].shadow || s.lights.directional[0].shadow);
+    // --shadows: each of them has a map, the point light a cube.
+    ModelPicture shadows;
+    shadows.shadows = true;
+    const Scene shadowed = model_scene(m, shadows);
+    EXPECT_TRUE(shadowed.lights.directional[0].shadow && shadowed.lights.punctual[0].shadow && shadowed.lights.punctual[1].shadow);
 }
 
 // tests/scenes/models/normal_mapped.gltf: a floor with a normal map and no tangents, a cube

@@ -251,12 +251,18 @@ TEST(SceneJson, Shadows) {
     EXPECT_EQ(s.lights.punctual[0].shadow->size, 64);
     EXPECT_EQ(s.lights.punctual[0].shadow->bias, 0.5f);
     EXPECT_EQ(s.lights.punctual[0].shadow->slope_bias, 0.0f);
+    // A point light's shadow (a cube map) has the same keys.
+    const Scene point = load_scene(
+        write_scene("point_shadow.json", with_lights(R"({"point": [{"position": [0, 1, 0], "shadow": {"size": 32}}]})")));
+    ASSERT_TRUE(point.lights.punctual[0].shadow.has_value());
+    EXPECT_FALSE(point.lights.punctual[0].spot);
+    EXPECT_EQ(point.lights.punctual[0].shadow->size, 32);
 
     const std::string dir = R"({"direction": [0, -1, 0], "color": [1, 1, 1], "shadow": {}})";
     const std::pair<std::string, const char*> errors[] = {
         {with("\"objects\"", "\"lights\": {\"directional\": [" + dir + "]}, \"objects\""),
          "lights.directional[0].shadow: a version 2 key in a version 1 file"},
-        {with_lights(R"({"point": [{"position": [0, 1, 0], "shadow": {}}]})"), "lights.point[0].shadow: unknown key"},
+        {with_lights(R"({"point": [{"position": [0, 1, 0], "shadow": {"pcf": 5}}]})"), "lights.point[0].shadow.pcf: value 5 out of range"},
         {with_lights(R"({"spot": [{"position": [0, 1, 0], "direction": [0, -1, 0], "outer_angle": 85, "shadow": {}}]})"),
          "lights.spot[0].outer_angle: a spot light with a shadow has outer_angle at most 80"},
         {with_lights(R"({"directional": [{"direction": [0, -1, 0], "color": [1, 1, 1], "shadow": {"size": 8}}]})"),

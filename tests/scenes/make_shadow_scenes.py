@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes the conformance scenes of shadow maps (tests/scenes/shadow_*.json): directional
-and spot lights with their maps, PCF kernels from one texel to 9 x 9, the bias and the
+and spot lights with their maps, point lights with their cubes (shadows across the faces'
+seams), PCF kernels from one texel to 9 x 9, the bias and the
 slope bias, shadows on every shading model that reads P (flat and lambert go through
 blinn_phong's shader, pbr), with MSAA and in an sRGB picture. ctest renders each with
 softraster and with Mesa llvmpipe (tests/reference) and compares. Run it again after
@@ -54,6 +55,17 @@ def main():
     mixed = props("gouraud")
     mixed[0]["material"] = {"shading": "pbr", "color": [0.85, 0.8, 0.75, 1], "roughness": 0.7}
     scene('gouraud_unshadowed', mixed, {"ambient": [0.15, 0.15, 0.18], "directional": [dict(sun, shadow={"size": 512})]})
+    # A point light's cube among the props: the floor below is in the -y face, beyond it in the
+    # side faces, so shadows cross the seams; lambert with one texel, pbr with 5 x 5 and MSAA.
+    bulb = {"position": [0.0, 1.5, 0.2], "color": [1, 0.95, 0.85], "intensity": 5}
+    scene('point_cube_lambert', props("lambert"),
+          {"ambient": [0.1, 0.1, 0.12], "point": [dict(bulb, shadow={"size": 256, "pcf": 0})]})
+    scene('point_cube_blinn_phong', props("blinn_phong", {"specular": [0.4, 0.4, 0.4], "shininess": 24}),
+          {"ambient": [0.1, 0.1, 0.12], "directional": [fill], "point": [dict(bulb, shadow={"size": 512})]})
+    low = dict(bulb, position=[0.3, 1.0, 0.3], intensity=3)
+    scene('point_cube_pbr_msaa', pbr,
+          {"ambient": [0.1, 0.1, 0.12], "point": [dict(low, shadow={"size": 512, "pcf": 2, "bias": 0.05, "slope_bias": 3})]},
+          samples=4, color_space="srgb", tone_mapping="aces")
 
 
 if __name__ == '__main__':

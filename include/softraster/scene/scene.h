@@ -90,7 +90,7 @@ struct PunctualLight {
     float range = 0.0f;             // 0: no range (the falloff never ends)
     float inner_angle = 0.0f;       // spot: degrees from the axis, inner < outer <= 90
     float outer_angle = 45.0f;
-    std::optional<ShadowSettings> shadow;  // spot lights only
+    std::optional<ShadowSettings> shadow;  // a spot light's map, or a point light's cube
 };
 
 struct Lights {
@@ -167,6 +167,9 @@ struct Bounds {
 Bounds shadow_bounds(const Scene& scene);
 glm::mat4 shadow_matrix(const DirectionalLight& light, const Bounds& b);
 glm::mat4 shadow_matrix(const PunctualLight& spot, const Bounds& b);
+// A point light's cube face (0..5: looking along +x, -x, +y, -y, +z, -z): the unit axis, and S.
+glm::vec3 cube_face_axis(int face);
+glm::mat4 shadow_matrix(const PunctualLight& point, const Bounds& b, int face);
 
 // Reads and validates a scene file; meshes and textures are resolved relative to it.
 // Throws InputError with one line naming the file and the JSON path or line.
