@@ -170,6 +170,18 @@ void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& sta
                      const Rect& rect, uint32_t draw, uint32_t* owners) {
     simd::on_best_path([&]<bool>() { softraster::visibility_pass<Samples>(triangles, state, fb, tx, ty, rect, draw, owners); });
 }
+// The tile back end and the shading pass once per back end, whatever the topology the
+// command was drawn with (lines and points draw the triangles of their quads).
+template <class BackEnd>
+uint64_t draw_tile(const BackEnd& back_end, int tx, int ty, const Rect& rect) {
+    return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
+}
+template <int Samples, Shader S>
+uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typename S::Varyings>>& triangles, const RenderState& state,
+                      Framebuffer& fb, int tx, int ty, const Rect& rect, uint32_t draw, const uint32_t* owners) {
+    return simd::on_best_path(
+        [&]<bool>() { return softraster::shading_pass<Samples>(shader, triangles, state, fb, tx, ty, rect, draw, owners); });
+}
 }  // namespace phases
 
 // The front end of a draw, the same for both back ends: vertex processing and binning in
@@ -242,8 +254,7 @@ public:
         if (rect.empty()) return 0;
         const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), BlendSettings(state_, target.fb->color_space()), triangles(),
                                                          *target.fb};
-        const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
-        return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
+        return phases::draw_tile(back_end, target.grid.tile_x(tile), target.grid.tile_y(tile), rect);
     }
 
     void visibility_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, uint32_t* owners) override {
@@ -252,12 +263,9 @@ public:
                                              target.grid.tile_y(tile), rect, draw, owners);
     }
     uint64_t shading_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, const uint32_t* owners) override {
-        if constexpr (!Blended && PureShader<S>) {
-            const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
-            return simd::on_best_path([&]<bool>() {
-                return softraster::shading_pass<Samples>(shader_, triangles(), state_, *target.fb, tx, ty, rect, draw, owners);
-            });
-        }
+        if constexpr (!Blended && PureShader<S>)
+            return phases::shading_pass<Samples>(shader_, triangles(), state_, *target.fb, target.grid.tile_x(tile),
+                                                 target.grid.tile_y(tile), rect, draw, owners);
         return 0;
     }
 
@@ -292,7 +300,7 @@ public:
             if (ops_.samples == 1 && ops_.early && (ops_.blend.replace || !ops_.blend.color_mask)) {
                 const TileBackEnd<S, 1, /*Blended=*/false, DepthStencilTest> back_end{shader_, state_, ops_.tests, ops_.blend,
                                                                                       triangles(), *target.fb};
-                return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
+                return phases::draw_tile(back_end, tx, ty, rect);
             }
         }
         return draw_tile_general(shader_, ops_, state_, triangles(), *target.fb, tx, ty, rect);

@@ -20,6 +20,7 @@
 #include <cstdint>
 
 #include "softraster/framebuffer.h"
+#include "softraster/pipeline/fragment_shading.h"
 #include "softraster/pipeline/output_merge.h"
 #include "softraster/pipeline/shader.h"
 #include "softraster/pipeline/simd.h"
@@ -127,7 +128,7 @@ private:
         std::array<f8, N> var;
         for (size_t k = 0; k < size_t(N); ++k) var[k] = load(var_[k]);
         std::array<f8, 4> rgba;
-        shader_->fragment_batch(var, load(z_), front_facing_, rgba);
+        run_fragment_batch(*shader_, var, load(z_), front_facing_, rgba);
         i8 packed;
         quantize_pack_rgba8(rgba, color_space_, packed);
         for (int l = 0; l < count; ++l) {

@@ -30,6 +30,39 @@ concept BatchShader = Shader<S> && requires(const S s, const std::array<simd::f8
 template <class S>
 concept PureShader = requires { requires S::kPure; };
 
+// A shader whose fragment code is long (lighting, several textures) says so with
+// `static constexpr bool kOutOfLine = true;`: the back ends then call it out of line,
+// compiled once per shader (in each CPU path's copy, on_best_path), instead of inlining it
+// into every back-end copy that shades (per sample count and blending, the hidden-surface
+// pass, the general back end). A call per eight fragments costs little next to such a
+// shader, and those inlined copies were most of the build; a short shader stays inline,
+// where the call would cost as much as its work (docs/performance.md, "Build time").
+template <class S>
+concept OutOfLineShader = requires { requires S::kOutOfLine; };
+
+template <BatchShader S>
+[[gnu::noinline]] void fragment_batch_out_of_line(const S& shader, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& varyings,
+                                                  const simd::f8& z, bool front_facing, std::array<simd::f8, 4>& rgba) {
+    simd::on_best_path([&]<bool>() { shader.fragment_batch(varyings, z, front_facing, rgba); });
+}
+template <Shader S>
+[[gnu::noinline]] bool fragment_out_of_line(const S& shader, const typename S::Varyings& v, const FragCoord& frag, glm::vec4& color) {
+    return simd::on_best_path([&]<bool>() { return shader.fragment(v, frag, color); });
+}
+
+// The shader's fragment_batch and fragment as the back ends call them.
+template <BatchShader S>
+inline void run_fragment_batch(const S& shader, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& varyings,
+                               const simd::f8& z, bool front_facing, std::array<simd::f8, 4>& rgba) {
+    if constexpr (OutOfLineShader<S>) fragment_batch_out_of_line(shader, varyings, z, front_facing, rgba);
+    else shader.fragment_batch(varyings, z, front_facing, rgba);
+}
+template <Shader S>
+inline bool run_fragment(const S& shader, const typename S::Varyings& v, const FragCoord& frag, glm::vec4& color) {
+    if constexpr (OutOfLineShader<S>) return fragment_out_of_line(shader, v, frag, color);
+    else return shader.fragment(v, frag, color);
+}
+
 // One fragment of pixel (x, y) whose samples `covered` lie at depths z: the depth test
 // (depth_stencil.h), the shader with the varyings make_varyings() returns, then the depth
 // write and the output merge for the samples that passed, unless the shader discarded.
@@ -44,7 +77,7 @@ inline void shade_fragment(const S& shader, const DepthStencil& depth, const Ble
     const typename S::Varyings v = make_varyings();
     const FragCoord frag{float(x) + 0.5f, float(y) + 0.5f, center_z, front_facing};
     glm::vec4 color;
-    if (!shader.fragment(v, frag, color)) return;
+    if (!run_fragment(shader, v, frag, color)) return;
     depth.template write_pixel<Samples>(fb.depth_data() + base, pass, z);
     if (blend.color_mask) merge_fragment<Samples, Blended>(blend, fb.color_data() + base, pass, color);
 }
@@ -56,7 +89,7 @@ inline void shade_group(const S& shader, const BlendSettings& blend, Rgba8* row,
                         const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& varyings, simd::f8 z,
                         bool front_facing) {
     std::array<simd::f8, 4> rgba;
-    shader.fragment_batch(varyings, z, front_facing, rgba);
+    run_fragment_batch(shader, varyings, z, front_facing, rgba);
     blend_group<Blended>(blend, row, x, width, pass, rgba);
 }
 

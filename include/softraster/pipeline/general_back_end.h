@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "softraster/framebuffer.h"
+#include "softraster/pipeline/fragment_shading.h"
 #include "softraster/pipeline/depth_stencil.h"
 #include "softraster/pipeline/fragment_shading.h"
 #include "softraster/pipeline/interpolation.h"
@@ -108,7 +109,7 @@ void general_fragment(const S& shader, const FragmentOps& ops, Framebuffer& fb, 
     }
     ++shaded;
     glm::vec4 color;
-    if (!shader.fragment(make_varyings(), FragCoord{float(x) + 0.5f, float(y) + 0.5f, center_z, front_facing}, color)) return;
+    if (!run_fragment(shader, make_varyings(), FragCoord{float(x) + 0.5f, float(y) + 0.5f, center_z, front_facing}, color)) return;
     if (!ops.early) {
         if (ops.alpha_test && color.a < ops.alpha_cutoff) return;
         if (ops.alpha_to_coverage) pass &= alpha_coverage(color.a, ops.samples);

@@ -133,7 +133,7 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
                 const float i = float(px.x - setup.origin_x), j = float(px.y - setup.origin_y);
                 const V v = from_array<V>(interpolate_varyings<S>(setup, i, j));
                 glm::vec4 color;
-                shader.fragment(v, FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
+                run_fragment(shader, v, FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
                 ++shaded;
                 merge_fragment<Samples, /*Blended=*/false>(blend, fb.color_data() + fb.sample_index(px.x, px.y), mine, color);
             });

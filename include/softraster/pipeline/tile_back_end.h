@@ -179,8 +179,8 @@ struct TileBackEnd {
         bool shaded_once = false;
         if constexpr (kConstant) {
             if (t.constant_varyings) {
-                shader.fragment_batch(interpolate_varyings<S, kConstant>(t, splat(0.0f), splat(0.0f)), splat(0.0f), t.front_facing,
-                                      constant_rgba);
+                run_fragment_batch(shader, interpolate_varyings<S, kConstant>(t, splat(0.0f), splat(0.0f)), splat(0.0f), t.front_facing,
+                                   constant_rgba);
                 shaded_once = true;
             }
         }
@@ -191,7 +191,7 @@ struct TileBackEnd {
                     return;
                 }
             }
-            shader.fragment_batch(interpolate_varyings<S, kConstant>(t, i, j), z, t.front_facing, rgba);
+            run_fragment_batch(shader, interpolate_varyings<S, kConstant>(t, i, j), z, t.front_facing, rgba);
         };
         rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
             const f8 j = splat(float(y - t.origin_y));

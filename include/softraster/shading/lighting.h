@@ -163,7 +163,7 @@ inline simd::f8 specular_power(simd::f8 a, float b) {
             if (e & 1u) result *= base;
         return result;
     }
-    simd::f8 r;
+    simd::f8 r{};
     for (int l = 0; l < simd::kLanes; ++l) r[l] = std::pow(a[l], b);
     return r;
 }
