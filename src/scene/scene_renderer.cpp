@@ -215,7 +215,7 @@ struct SceneRenderer::ShadowPass {
         ShadowFace& f = map.face[faces.size() - 1];
         f.depth = pass.fb.depth_data();
         f.matrix = matrix;
-        f.offset = glm::vec3(-double(s.bias) * glm::normalize(glm::dvec3(travel)));
+        f.offset = shadow_offset(s, travel);
         map.faces = int(faces.size());
     }
 };

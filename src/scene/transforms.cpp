@@ -89,6 +89,10 @@ glm::vec3 cube_face_axis(int face) {
     return a;
 }
 
+glm::vec3 shadow_offset(const ShadowSettings& s, const glm::vec3& travel) {
+    return glm::vec3(-double(s.bias) * glm::normalize(glm::dvec3(travel)));
+}
+
 // A point light's cube face: 90 degrees wide, so the six frusta meet edge to edge.
 glm::mat4 shadow_matrix(const PunctualLight& light, const Bounds& b, int face) {
     return light_perspective(glm::dvec3(light.position), glm::dvec3(cube_face_axis(face)), 90.0, b);

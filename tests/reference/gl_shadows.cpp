@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace glref {
@@ -25,7 +24,7 @@ GlShadows::GlShadows(const softraster::Scene& scene) {
         for (int f = 0; f < faces; ++f) {
             Face face;
             face.matrix = matrix(f);
-            face.offset = glm::vec3(-double(s.bias) * glm::normalize(glm::dvec3(travel(f))));
+            face.offset = softraster::shadow_offset(s, travel(f));
             glGenFramebuffers(1, &face.fbo);
             glBindFramebuffer(GL_FRAMEBUFFER, face.fbo);
             glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, m.texture, 0, f);

@@ -170,6 +170,8 @@ glm::mat4 shadow_matrix(const PunctualLight& spot, const Bounds& b);
 // A point light's cube face (0..5: looking along +x, -x, +y, -y, +z, -z): the unit axis, and S.
 glm::vec3 cube_face_axis(int face);
 glm::mat4 shadow_matrix(const PunctualLight& point, const Bounds& b, int face);
+// The lookup's offset b: `bias` toward the light, against `travel` (the way the light goes).
+glm::vec3 shadow_offset(const ShadowSettings& s, const glm::vec3& travel);
 
 // Reads and validates a scene file; meshes and textures are resolved relative to it.
 // Throws InputError with one line naming the file and the JSON path or line.
