@@ -49,6 +49,8 @@ public:
     void clear(const glm::vec4& color, float depth = 1.0f, uint8_t stencil = 0) {
         commands_.push_back(std::make_unique<ClearCommand>(color, depth, stencil));
     }
+    // Clears depth only: color and stencil keep what they hold.
+    void clear_depth(float depth = 1.0f) { commands_.push_back(std::make_unique<ClearCommand>(depth)); }
 
     // Records a draw of `indices` (three per triangle, two per line, one per point).
     // Throws std::out_of_range for an index past the end of `vertices`.

@@ -184,7 +184,7 @@ struct DepthPass {
     void render(WorkerPool* pool) {
         if (!ctx) {
             ctx = std::make_unique<Context>(fb, pool);
-            ctx->clear(glm::vec4(0.0f), 1.0f, 0);
+            ctx->clear_depth(1.0f);  // (no color is drawn, nor read)
             for (const SceneRenderer::Draw& d : draws) draw_object(*ctx, d);
         }
         ctx->execute();

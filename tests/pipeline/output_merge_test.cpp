@@ -35,6 +35,23 @@ std::pair<bool, float> draw_at(DepthFunc f, float z, float stored, bool write = 
 
 }  // namespace
 
+// A depth-only clear (depth passes) sets every sample's depth and leaves color and stencil.
+TEST(Clear, DepthOnlyLeavesColorAndStencil) {
+    Framebuffer fb(W, H, 4);
+    fb.add_stencil();
+    Context ctx(fb);
+    ctx.clear(glm::vec4(0.2f, 0.4f, 0.6f, 1.0f), 0.25f, 7);
+    ctx.finish();
+    const Rgba8 color = fb.color_data()[0];
+    ctx.clear_depth(0.75f);
+    ctx.finish();
+    for (size_t i = 0; i < size_t(W * H * 4); ++i) {
+        ASSERT_EQ(fb.depth_data()[i], 0.75f) << i;
+        ASSERT_EQ(fb.color_data()[i], color) << i;
+        ASSERT_EQ(fb.stencil_data()[i], 7) << i;
+    }
+}
+
 TEST(DepthTest, EveryCompareFunction) {
     struct Case {
         DepthFunc f;

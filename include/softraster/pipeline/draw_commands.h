@@ -114,6 +114,8 @@ private:
 class ClearCommand final : public Command {
 public:
     ClearCommand(const glm::vec4& color, float depth, uint8_t stencil = 0) : color_(color), depth_(depth), stencil_(stencil) {}
+    // Depth only: a depth pass's clear (shadow maps) leaves the color it never reads alone.
+    explicit ClearCommand(float depth) : depth_(depth), depth_only_(true) {}
     uint64_t draw_tile(int, const Rect& r, const DrawTarget& target) override {
         Framebuffer& fb = *target.fb;
         const Rgba8 stored = quantize_rgba8(color_, fb.color_space());  // (as glClear with GL_FRAMEBUFFER_SRGB)
@@ -129,21 +131,23 @@ public:
                 const auto* c = reinterpret_cast<const char*>(fb.color_data() + fb.sample_index(r.x0, y + kAhead));
                 const auto* d = reinterpret_cast<const char*>(fb.depth_data() + fb.sample_index(r.x0, y + kAhead));
                 for (size_t k = 0; k < n * sizeof(float); k += 64) {
-                    __builtin_prefetch(c + k, /*write=*/1);
+                    if (!depth_only_) __builtin_prefetch(c + k, /*write=*/1);
                     __builtin_prefetch(d + k, /*write=*/1);
                 }
             }
-            std::fill_n(reinterpret_cast<uint32_t*>(fb.color_data() + fb.sample_index(r.x0, y)), n, color);
             std::fill_n(fb.depth_data() + fb.sample_index(r.x0, y), n, depth_);
+            if (depth_only_) continue;
+            std::fill_n(reinterpret_cast<uint32_t*>(fb.color_data() + fb.sample_index(r.x0, y)), n, color);
             if (fb.has_stencil()) std::fill_n(fb.stencil_data() + fb.sample_index(r.x0, y), n, stencil_);
         }
         return 0;
     }
 
 private:
-    glm::vec4 color_;
+    glm::vec4 color_{0.0f};
     float depth_;
-    uint8_t stencil_;
+    uint8_t stencil_ = 0;
+    bool depth_only_ = false;
 };
 
 inline constexpr size_t kVertexChunk = 16384;
