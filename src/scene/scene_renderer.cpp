@@ -200,6 +200,7 @@ struct SceneRenderer::ShadowPass {
     ShadowMap map;
 
     explicit ShadowPass(const ShadowSettings& s) {
+        faces.reserve(6);  // never moved: the map's faces point into their framebuffers
         map.size = s.size;
         map.pcf = s.pcf;
     }
@@ -257,7 +258,6 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
     auto bounds = [&]() -> const Bounds& { return scene_bounds ? *scene_bounds : scene_bounds.emplace(shadow_bounds(scene)); };
     auto add_shadow = [&](const ShadowSettings& s) -> ShadowPass& {
         shadow_passes_.push_back(std::make_unique<ShadowPass>(s));
-        shadow_passes_.back()->faces.reserve(6);  // (the maps point into the passes' framebuffers)
         lights.shadows[size_t(lights.shadow_count++)] = &shadow_passes_.back()->map;
         return *shadow_passes_.back();
     };
