@@ -82,12 +82,19 @@ Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpa
     for (int j = 0; j < image.height; ++j)  // flip: texel row 0 is the bottom of the picture
         for (int i = 0; i < image.width; ++i) base[size_t(j) * size_t(image.width) + size_t(i)] = image.at(i, image.height - 1 - j);
     rows.push_back(std::move(base));
+    // (The lanes index texels with 32-bit integers: the whole chain must stay below 2^31.)
+    int64_t stored = 0;
+    for (int w = image.width, h = image.height;; w = std::max(1, w / 2), h = std::max(1, h / 2)) {
+        stored += int64_t((w + 3) / 4) * int64_t((h + 3) / 4) * kTileTexels;
+        if (w == 1 && h == 1) break;
+    }
+    if (stored > int64_t(INT32_MAX) - 64) throw std::invalid_argument("texture image has too many texels (its tiles and mipmaps need 2^31 or more)");
     int offset = 0;
     for (int w = image.width, h = image.height;; w = std::max(1, w / 2), h = std::max(1, h / 2)) {
         if (!levels_.empty()) rows.push_back(downsample(rows.back(), levels_.back().width, levels_.back().height, w, h, srgb_));
         const int tiles_x = (w + 3) / 4, tiles_y = (h + 3) / 4;
         levels_.push_back(Level{w, h, tiles_x, offset});
-        offset += tiles_x * tiles_y * 16;
+        offset += tiles_x * tiles_y * kTileTexels;
         if (w == 1 && h == 1) break;
     }
     for (size_t k = 0; k < 16; ++k) {
@@ -98,13 +105,20 @@ Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpa
     storage_.assign(size_t(offset) + 15, 0u);
     aligned_ = (64 - reinterpret_cast<uintptr_t>(storage_.data()) % 64) % 64 / sizeof(uint32_t);
     uint32_t* out = storage_.data() + aligned_;
+    // Tile by tile, apron and padding included: place (x, y) of tile (tx, ty) holds texel
+    // (4 tx + x, 4 ty + y), wrapped as repeat wraps.
     for (size_t k = 0; k < levels_.size(); ++k) {
         const Level& l = levels_[k];
-        for (int j = 0; j < l.height; ++j)
-            for (int i = 0; i < l.width; ++i) {
-                const Rgba8 t = rows[k][size_t(j) * size_t(l.width) + size_t(i)];
-                out[texel_index(l, i, j)] = uint32_t(t.r) | uint32_t(t.g) << 8 | uint32_t(t.b) << 16 | uint32_t(t.a) << 24;
-            }
+        const int tiles_y = (l.height + 3) / 4;
+        uint32_t* tile = out + l.offset;
+        for (int ty = 0; ty < tiles_y; ++ty)
+            for (int tx = 0; tx < l.tiles_x; ++tx, tile += kTileTexels)
+                for (int y = 0; y < kTileSide; ++y)
+                    for (int x = 0; x < kTileSide; ++x) {
+                        const int i = (4 * tx + x) % l.width, j = (4 * ty + y) % l.height;
+                        const Rgba8 t = rows[k][size_t(j) * size_t(l.width) + size_t(i)];
+                        tile[y * kTileSide + x] = uint32_t(t.r) | uint32_t(t.g) << 8 | uint32_t(t.b) << 16 | uint32_t(t.a) << 24;
+                    }
     }
 }
 
@@ -306,6 +320,43 @@ struct LaneLevels {
     i8 width, height, tiles_x, offset;
 };
 
+// Texture::texel_index on eight lanes.
+inline i8 tile_index8(const LaneLevels& l, const i8& i, const i8& j) {
+    return l.offset + ((j >> 2) * l.tiles_x + (i >> 2)) * Texture::kTileTexels + (j & 3) * Texture::kTileSide + (i & 3);
+}
+
+// The four texels of each lane's bilinear footprint in the apron layout (texture.h): the
+// texel at the index, its right neighbour, and the two above them, one tile row (5) on.
+template <bool Wide>
+inline void load_footprints(const uint32_t* p, const i8& index, i8 (&texel)[4]) {
+    for (int k = 0; k < simd::kLanes; ++k) {
+        const uint32_t* t = p + index[k];
+        texel[0][k] = int32_t(t[0]), texel[1][k] = int32_t(t[1]);
+        texel[2][k] = int32_t(t[Texture::kTileSide]), texel[3][k] = int32_t(t[Texture::kTileSide + 1]);
+    }
+}
+#if SOFTRASTER_HAS_AVX2_PATH
+// Two 8-byte loads per lane, (a, b) and (c, d), make its footprint in one 16-byte register;
+// lanes k and k + 4 share a 32-byte one, and a 4x4 transpose in each half turns the four
+// into the footprint's texels across the lanes: far cheaper here than four gathers.
+template <>
+[[gnu::target("avx2")]] inline void load_footprints<true>(const uint32_t* p, const i8& index, i8 (&texel)[4]) {
+    alignas(32) int32_t at[simd::kLanes];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(at), __m256i(index));
+    auto lane = [&](int k) {
+        const uint32_t* t = p + at[k];
+        const __m128 low = _mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(t)));
+        return _mm_castps_si128(_mm_loadh_pi(low, reinterpret_cast<const __m64*>(t + Texture::kTileSide)));
+    };
+    __m256i y[4];
+    for (int k = 0; k < 4; ++k) y[k] = _mm256_inserti128_si256(_mm256_castsi128_si256(lane(k)), lane(k + 4), 1);
+    const __m256i ab01 = _mm256_unpacklo_epi32(y[0], y[1]), cd01 = _mm256_unpackhi_epi32(y[0], y[1]);
+    const __m256i ab23 = _mm256_unpacklo_epi32(y[2], y[3]), cd23 = _mm256_unpackhi_epi32(y[2], y[3]);
+    texel[0] = i8(_mm256_unpacklo_epi64(ab01, ab23)), texel[1] = i8(_mm256_unpackhi_epi64(ab01, ab23));
+    texel[2] = i8(_mm256_unpacklo_epi64(cd01, cd23)), texel[3] = i8(_mm256_unpackhi_epi64(cd01, cd23));
+}
+#endif
+
 // ---- the fixed-point filter on sixteen-bit lanes (sample_level_fixed)
 //
 // One gather's eight texels make two registers of sixteen 16-bit lanes: texels 0-3 in `lo`,
@@ -475,16 +526,33 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
             const i8 is[4] = {ia, ib, ia, ib}, js[4] = {ja, ja, jb, jb};
             for (int t = 0; t < 4; ++t) {
                 border[t] = (is[t] < 0) | (js[t] < 0);  // (never without a border wrap mode)
-                const i8 index = l.offset + ((js[t] >> 2) * l.tiles_x + (is[t] >> 2)) * 16 + (js[t] & 3) * 4 + (is[t] & 3);
+                const i8 index = tile_index8(l, is[t], js[t]);
                 gather<Wide>(texels, has_border ? select(border[t], splat_i(0), index) : index, texel[t]);
             }
+        };
+        // Repeat and clamp read the footprint from the tile's apron (texture.h): its lower-left
+        // texel wrapped, the others at offsets 1, 5 and 6. Clamp at an edge, where both texels
+        // of an axis are the edge texel, reads the edge texel alone: weight 0 on the other.
+        const bool apron = s.wrap_s != Wrap::Mirror && s.wrap_t != Wrap::Mirror;
+        auto apron_axis = [&](const i8& i0, const i8& n, Wrap w, i8& weight) {
+            if (w != Wrap::Clamp) return wrap_texel8<Pot>(i0, n, w);
+            const i8 edge = (i0 < 0) | (i0 >= n - 1);
+            weight = select(edge, splat_i(0), weight);
+            return select(i0 < 0, splat_i(0), select(edge, n - 1, i0));
         };
         // One level's lookup: in fixed point (sample_level_fixed; a Fixed8 result) ...
         auto at_level_fixed = [&](const LaneLevels& l, const f8& ur, const f8& vr) {
             const i8 x = floor_small8((ur * to_float(l.width) - half) * 256.0f), y = floor_small8((vr * to_float(l.height) - half) * 256.0f);
-            i8 texel[4], border[4];
-            footprint(l, x >> 8, y >> 8, texel, border);
-            return bilinear16<Wide>(texel, select(nearest, splat_i(0), x & 255), select(nearest, splat_i(0), y & 255));
+            i8 fx = select(nearest, splat_i(0), x & 255), fy = select(nearest, splat_i(0), y & 255);
+            i8 texel[4];
+            if (apron) {
+                const i8 i0 = apron_axis(x >> 8, l.width, s.wrap_s, fx), j0 = apron_axis(y >> 8, l.height, s.wrap_t, fy);
+                load_footprints<Wide>(texels, tile_index8(l, i0, j0), texel);
+            } else {
+                i8 border[4];
+                footprint(l, x >> 8, y >> 8, texel, border);
+            }
+            return bilinear16<Wide>(texel, fx, fy);
         };
         // ... or in float (sample_level; four channels).
         auto at_level_float = [&](const LaneLevels& l, const f8& ur, const f8& vr, std::array<f8, 4>& out) {

@@ -78,6 +78,7 @@ struct LevelChoice {
 class Texture {
 public:
     static constexpr int kMaxSide = 65536;  // texels a side, at most
+    static constexpr int kTileSide = 5, kTileTexels = kTileSide * kTileSide;  // (the stored tiles, below)
     // The fixed-point channel value (0 to 65280) to [0, 1]: times 1/255 as an 8-bit texel is
     // converted, and 1/256 (exact), so that value x 256 gives the 8-bit conversion's bits.
     static constexpr float kFixedToUnit = (1.0f / 255.0f) / 256.0f;
@@ -119,16 +120,20 @@ public:
     LevelChoice select_lod(const UvDerivatives& d, const Sampler& s) const;
 
 private:
-    // Each level is stored in tiles of 4x4 texels (64 bytes, one cache line: a bilinear
-    // footprint mostly falls in one), the tiles row by row, the texel rows in a tile bottom
-    // first; a level's sides are padded to multiples of 4. All levels share one array.
+    // Each level is stored in tiles of 4x4 texels, the tiles row by row, each with an apron:
+    // a fifth column and a fifth row repeating the texels to the right and above (the next
+    // tiles' first column and row, and past the level's last texel its first, as repeat
+    // wraps). A tile is 5x5 texels, rows bottom first, 100 bytes. Every bilinear footprint
+    // whose lower-left texel is in the tile is then inside it, at offsets 0, 1, 5 and 6: two
+    // 8-byte loads instead of four gathered texels (sample_lanes). A level's sides are padded
+    // to multiples of 4 (the padding holds the wrapped texels too). All levels share one array.
     struct Level {
         int width, height;
         int tiles_x;  // tiles per row
         int offset;   // of the level's first texel in the array
     };
     static size_t texel_index(const Level& l, int i, int j) {
-        return size_t(l.offset) + size_t(((j >> 2) * l.tiles_x + (i >> 2)) * 16 + (j & 3) * 4 + (i & 3));
+        return size_t(l.offset) + size_t((j >> 2) * l.tiles_x + (i >> 2)) * kTileTexels + size_t((j & 3) * kTileSide + (i & 3));
     }
     const uint32_t* texels() const { return storage_.data() + aligned_; }
     std::vector<Level> levels_;
