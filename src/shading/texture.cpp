@@ -516,7 +516,8 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         // gives exactly the one texel (t * 1 + t' * 0 = t).
         const f8 half = select(nearest, splat(0.0f), splat(0.5f));
         const uint32_t* texels = this->texels();
-        const std::array<float, 256>& decode = srgb::tables().decode;
+        // (sRGB textures only: a call here would cost every lookup a call and its spills.)
+        const float* decode = Srgb ? srgb::tables().decode.data() : nullptr;
         const bool has_border = s.wrap_s == Wrap::Border || s.wrap_t == Wrap::Border;
         // The footprint's four texels, (ia, ja), (ib, ja), (ia, jb), (ib, jb), from the texel
         // below-left of the sample point, and which are the border color.
