@@ -1,6 +1,7 @@
 // Binning: the front end's last stage. Each triangle that survives clipping and culling is
 // appended to the bin of every tile its bounds touch (the pixels with a sample in its box,
-// sample_pattern.h), so that later each tile is drawn by one thread from its own list.
+// sample_pattern.h) and none of its edges leaves wholly outside, so that later each tile is
+// drawn by one thread from its own list.
 //
 // Following Mesa llvmpipe (lp_setup -> lp_scene -> lp_rast): the picture is cut into 64x64
 // tiles; one thread at a time owns a tile and draws its triangles in draw order, so no two
@@ -13,6 +14,8 @@
 // objects then costs per triangle, not per draw and tile.
 #pragma once
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -36,8 +39,9 @@ struct TriangleBin {
     TileRange range;                       // the tiles this chunk's triangles touch
     std::vector<TriangleRef> refs;         // grouped by tile of `range`, draw order within each
     std::vector<uint32_t> tile_begin;      // local tile k's refs: [tile_begin[k], tile_begin[k + 1])
-    // Per local tile: the pixels its triangles cover, summed (each triangle's area, at most
-    // its bounds within the tile), an estimate of the overdraw (hidden_surface_removal.h).
+    // Per local tile: the pixels its triangles cover, summed (add_to_tiles: exact for large
+    // triangles, else each one's area, at most its bounds within the tile), an estimate of
+    // the overdraw (hidden_surface_removal.h).
     std::vector<float> covered_area;
 
     struct Pending {  // a (tile, triangle) pair before grouping
@@ -56,16 +60,91 @@ struct TriangleBin {
     }
 };
 
-// Appends triangle `ref`, whose samples may lie in pixels `bounds` and whose snapped area is
-// |area2| / 2 in 1/256-pixel units squared, to every tile of `grid` the bounds touch.
-template <int N>
-void add_to_tiles(TriangleBin<N>& bin, const TileGrid& grid, TriangleRef ref, Rect bounds, int64_t area2) {
+// The area (in pixels) of the triangle with corners p[0..2] (snapped window coordinates, in
+// 1/256 pixel) inside rectangle [x0, x1] x [y0, y1] (the same units): the triangle clipped
+// to each side in turn (Sutherland-Hodgman), then the shoelace formula.
+inline double clipped_area(const std::array<double, 3>& px, const std::array<double, 3>& py, double x0, double y0, double x1, double y1) {
+    struct P {
+        double x, y;
+    };
+    std::array<P, 8> a{}, b{};
+    int n = 3;
+    for (int k = 0; k < 3; ++k) a[size_t(k)] = {px[size_t(k)], py[size_t(k)]};
+    // side k keeps the points where inside(p) >= 0: x - x0, x1 - x, y - y0, y1 - y
+    auto inside = [&](int side, const P& p) { return side == 0 ? p.x - x0 : side == 1 ? x1 - p.x : side == 2 ? p.y - y0 : y1 - p.y; };
+    for (int side = 0; side < 4 && n > 0; ++side) {
+        int m = 0;
+        for (int k = 0; k < n; ++k) {
+            const P& p = a[size_t(k)];
+            const P& q = a[size_t((k + 1) % n)];
+            const double dp = inside(side, p), dq = inside(side, q);
+            if (dp >= 0) b[size_t(m++)] = p;
+            if ((dp >= 0) != (dq >= 0)) {  // the side crosses pq
+                const double t = dp / (dp - dq);
+                b[size_t(m++)] = {p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t};
+            }
+        }
+        n = m;
+        a = b;
+    }
+    double twice = 0;
+    for (int k = 0; k < n; ++k) twice += a[size_t(k)].x * a[size_t((k + 1) % n)].y - a[size_t((k + 1) % n)].x * a[size_t(k)].y;
+    return std::abs(twice) * 0.5 / double(kSubpixelOne * kSubpixelOne);
+}
+
+// A triangle whose bounds span at least this many tiles across or down is large: it skips
+// the tiles it does not reach and has its area in each tile computed exactly (clipped_area).
+// A smaller one (most of a detailed mesh's) costs only its bounds: it goes to each tile they
+// touch and counts its area, at most its bounds within the tile.
+inline constexpr int kLargeTriangleTiles = 3;
+
+// Appends a large triangle (add_to_tiles) to the tiles of `grid` in tiles [tx0, tx1] x
+// [ty0, ty1] that it may cover: a tile that one of its edges leaves wholly outside (the
+// tile's four corners strictly outside) holds none of its samples and is skipped. Each tile
+// gets the triangle's area within it (and within the picture, for a tile at its edge).
+template <int N, class V>
+[[gnu::noinline]] void add_large_to_tiles(TriangleBin<N>& bin, const TileGrid& grid, TriangleRef ref, const V& a, const V& b, const V& c,
+                                          int tx0, int ty0, int tx1, int ty1, int64_t area2) {
+    // Edge k from corner k to the next: E(P) = (e.x)(P.y - k.y) - (e.y)(P.x - k.x), of area2's
+    // sign inside (E at the third corner is area2).
+    const int64_t xs[3] = {a.X, b.X, c.X}, ys[3] = {a.Y, b.Y, c.Y};
+    const int64_t sign = area2 < 0 ? -1 : 1;
+    auto outside_one_edge = [&](int64_t x0, int64_t y0, int64_t x1, int64_t y1) {
+        for (int k = 0; k < 3; ++k) {
+            const int64_t ex = xs[(k + 1) % 3] - xs[k], ey = ys[(k + 1) % 3] - ys[k];
+            auto out = [&](int64_t x, int64_t y) { return sign * (ex * (y - ys[k]) - ey * (x - xs[k])) < 0; };
+            if (out(x0, y0) && out(x1, y0) && out(x0, y1) && out(x1, y1)) return true;
+        }
+        return false;
+    };
+    const std::array<double, 3> px = {double(a.X), double(b.X), double(c.X)}, py = {double(a.Y), double(b.Y), double(c.Y)};
+    const int64_t right = int64_t(grid.width) * kSubpixelOne, bottom = int64_t(grid.height) * kSubpixelOne;
+    for (int ty = ty0; ty <= ty1; ++ty)
+        for (int tx = tx0; tx <= tx1; ++tx) {
+            // The tile's samples lie in its pixels' squares: [64 tx, 64 (tx + 1)] pixels.
+            const int64_t x0 = int64_t(tx) * kTileSize * kSubpixelOne, x1 = x0 + kTileSize * kSubpixelOne;
+            const int64_t y0 = int64_t(ty) * kTileSize * kSubpixelOne, y1 = y0 + kTileSize * kSubpixelOne;
+            if (outside_one_edge(x0, y0, x1, y1)) continue;
+            const double in = clipped_area(px, py, double(x0), double(y0), double(std::min(x1, right)), double(std::min(y1, bottom)));
+            bin.pending.push_back({uint16_t(tx), uint16_t(ty), float(in), ref});
+        }
+}
+
+// Appends triangle `ref` with corners a, b, c (snapped window coordinates), whose samples
+// may lie in pixels `bounds` and whose snapped area is |area2| / 2 in 1/256-pixel units
+// squared, to every tile of `grid` the bounds touch, with the area it covers there for the
+// hidden-surface decision (hidden_surface_removal.h); a large one only to the tiles it may
+// cover (add_large_to_tiles).
+template <int N, class V>
+void add_to_tiles(TriangleBin<N>& bin, const TileGrid& grid, TriangleRef ref, const V& a, const V& b, const V& c, Rect bounds, int64_t area2) {
     const Rect r = intersect(bounds, Rect{0, 0, grid.width, grid.height});
     if (r.empty()) return;
-    const float area = float(area2 < 0 ? -area2 : area2) * (0.5f / float(kSubpixelOne * kSubpixelOne));
     const int tx0 = r.x0 / kTileSize, tx1 = (r.x1 - 1) / kTileSize, ty0 = r.y0 / kTileSize, ty1 = (r.y1 - 1) / kTileSize;
-    bin.range.include(tx0, ty0);
-    bin.range.include(tx1, ty1);
+    bin.range.include(tx0, ty0);  // (a large triangle may skip its corner tiles: the range
+    bin.range.include(tx1, ty1);  // holds its bounds all the same, as it needs only hold them)
+    if (area2 != 0 && (tx1 - tx0 + 1 >= kLargeTriangleTiles || ty1 - ty0 + 1 >= kLargeTriangleTiles))
+        return add_large_to_tiles(bin, grid, ref, a, b, c, tx0, ty0, tx1, ty1, area2);
+    const float area = float(area2 < 0 ? -area2 : area2) * (0.5f / float(kSubpixelOne * kSubpixelOne));
     for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) {
             const int w = std::min(r.x1, (tx + 1) * kTileSize) - std::max(r.x0, tx * kTileSize);
@@ -110,7 +189,7 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
         const ShadedVertex<N>&a = bin.vertex(ia, post), &b = bin.vertex(ib, post), &c = bin.vertex(ic, post);
         const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
         if (!survives_culling(area2, faces)) return;
-        add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, pixel_bounds<Samples>(a, b, c), area2);
+        add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, a, b, c, pixel_bounds<Samples>(a, b, c), area2);
     });
     group_by_tile(bin);
 }

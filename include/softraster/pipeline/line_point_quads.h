@@ -166,7 +166,7 @@ void bin_lines_points(Topology topology, std::span<const uint32_t> indices, cons
             if (area2 == 0) continue;
             if (!is_front_facing(area2 < 0, shape.front)) std::swap(v[1], v[2]), area2 = -area2;  // lines and points face front
             add_to_tiles(bin, grid, TriangleRef{{v[0] | kClippedVertex, v[1] | kClippedVertex, v[2] | kClippedVertex}},
-                         pixel_bounds<Samples>(p, q, r), area2);
+                         bin.clipped[v[0]], bin.clipped[v[1]], bin.clipped[v[2]], pixel_bounds<Samples>(p, q, r), area2);
         }
     };
     if (topology == Topology::Points) {
