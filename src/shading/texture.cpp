@@ -535,10 +535,10 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         // texel wrapped, the others at offsets 1, 5 and 6. Clamp at an edge, where both texels
         // of an axis are the edge texel, reads the edge texel alone: weight 0 on the other.
         const bool apron = s.wrap_s != Wrap::Mirror && s.wrap_t != Wrap::Mirror;
-        auto apron_axis = [&](const i8& i0, const i8& n, Wrap w, i8& weight) {
+        auto apron_axis = [&](const i8& i0, const i8& n, Wrap w, i8& fraction) {
             if (w != Wrap::Clamp) return wrap_texel8<Pot>(i0, n, w);
             const i8 edge = (i0 < 0) | (i0 >= n - 1);
-            weight = select(edge, splat_i(0), weight);
+            fraction = select(edge, splat_i(0), fraction);
             return select(i0 < 0, splat_i(0), select(edge, n - 1, i0));
         };
         // One level's lookup: in fixed point (sample_level_fixed; a Fixed8 result) ...

@@ -370,3 +370,29 @@ TEST(Texture, EightLookupsAtOnceEqualOneAtATime) {
         simd::use_generic_path(false);
     }
 }
+
+// Textures of the size of real assets' (a megapixel, one side not a power of two): every
+// texel is where the image has it, and lookups at texel centers, eight at once, return it.
+TEST(Texture, LargeTexturesKeepEveryTexel) {
+    for (const auto& [w, h] : {std::pair{1024, 600}, std::pair{1024, 1024}}) {
+        Image img(w, h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) img.at(x, y) = {uint8_t(x), uint8_t(x >> 8 | y << 2), uint8_t(y), uint8_t(y >> 8 | 0x80)};
+        const Texture t(img);
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i) {
+                const Rgba8 want = img.at(i, h - 1 - j), got = t.stored(0, i, j);
+                ASSERT_TRUE(got.r == want.r && got.g == want.g && got.b == want.b && got.a == want.a) << w << "x" << h << " texel " << i << "," << j;
+            }
+        // Lookups at texel centers, eight at once, give the texels.
+        const Sampler s = Sampler::plain(Filter::Bilinear, Wrap::Repeat);
+        for (int j = 0; j < h; j += 37) {
+            simd::f8 u, v;
+            for (int l = 0; l < simd::kLanes; ++l) u[l] = (float(l * 131 % w) + 0.5f) / float(w), v[l] = (float(j) + 0.5f) / float(h);
+            std::array<simd::f8, 4> got;
+            t.sample8(u, v, {}, s, got);
+            for (int l = 0; l < simd::kLanes; ++l)
+                ASSERT_EQ(got[0][l], t.texel(l * 131 % w, j).r) << w << "x" << h << " lane " << l << " row " << j;
+        }
+    }
+}
