@@ -6,6 +6,7 @@
 // (i, j) are pixel offsets from the planes' origin pixel; fractions address sample points.
 #pragma once
 #include <array>
+#include <type_traits>
 
 #include "softraster/pipeline/shader.h"
 #include "softraster/pipeline/simd.h"
@@ -50,8 +51,49 @@ inline simd::f8 odd(int origin, simd::f8 i) { return simd::to_float((simd::splat
 // quad's top-left pixel, as llvmpipe takes them:
 //   da/dx = a(x0 + 1, y0) - a(x0, y0),   da/dy = a(x0, y0 + 1) - a(x0, y0),
 // each a perspective-correct as above, whether or not those pixels are covered.
+//
+// Eight lanes that are eight pixels of a row, the first at an even x (a group of
+// for_each_group), hold four whole quads' top or bottom rows: each quad's corners on this
+// row are then lanes already computed, and only the other row needs a 1/w (two divisions
+// a group instead of four). The values are the same, computed from the same numbers.
+template <class S, bool Constant, int N>
+inline bool quad_row_lanes(const TriangleSetup<N>& t, const simd::f8& i, const simd::f8& j) {
+    if constexpr (Constant)
+        if (t.constant_varyings) return false;
+    return ((t.origin_x + int(i[0])) & 1) == 0 && !simd::any(i != simd::to_float(simd::kLaneIndex) + i[0]) && !simd::any(j != j[0]);
+}
+template <class S, int N>
+inline std::array<simd::f8, N> interpolate_quad_rows(const TriangleSetup<N>& t, simd::f8 i, simd::f8 j) {
+    using simd::f8;
+    constexpr uint64_t Flat = kFlatVaryings<S>;
+    constexpr size_t a = size_t(S::kDerivativeOf), at = size_t(S::kDerivativeAt);
+    std::array<f8, N> out;
+    const f8 w = 1.0f / t.inv_w.at(i, j);  // (interpolate_perspective)
+    for (size_t k = 0; k < size_t(N); ++k) {
+        if ((Flat >> k) & 1) out[k] = t.var_w[k].at(i, j);
+        else out[k] = t.var_w[k].at(i, j) * w;
+    }
+    const bool top = ((t.origin_y + int(j[0])) & 1) == 0;  // this row is the quads' first (y0)
+    const f8 j_other = top ? j + 1.0f : j - 1.0f;
+    const f8 w_other = 1.0f / t.inv_w.at(i, j_other);
+    auto even = [](const f8& v) { return __builtin_shufflevector(v, v, 0, 0, 2, 2, 4, 4, 6, 6); };
+    auto odd = [](const f8& v) { return __builtin_shufflevector(v, v, 1, 1, 3, 3, 5, 5, 7, 7); };
+    for (size_t c = 0; c < 2; ++c) {
+        const Plane& p = t.var_w[a + c];
+        const f8 here = p.at(i, j) * w, there = p.at(i, j_other) * w_other;
+        const f8 row0 = top ? here : there, row1 = top ? there : here;  // a at rows y0 and y0 + 1
+        const f8 v00 = even(row0);
+        out[at + c] = odd(row0) - v00;
+        out[at + 2 + c] = even(row1) - v00;
+    }
+    return out;
+}
+
 template <class S, bool Constant = false, int N, class T>
 inline std::array<T, N> interpolate_varyings(const TriangleSetup<N>& t, T i, T j) {
+    if constexpr (DerivativeShader<S> && std::is_same_v<T, simd::f8>) {
+        if (quad_row_lanes<S, Constant>(t, i, j)) return interpolate_quad_rows<S>(t, i, j);
+    }
     std::array<T, N> out = interpolate_perspective<kFlatVaryings<S>, Constant>(t, i, j);
     if constexpr (DerivativeShader<S>) {
         constexpr size_t a = size_t(S::kDerivativeOf), at = size_t(S::kDerivativeAt);
