@@ -82,21 +82,18 @@ Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpa
     for (int j = 0; j < image.height; ++j)  // flip: texel row 0 is the bottom of the picture
         for (int i = 0; i < image.width; ++i) base[size_t(j) * size_t(image.width) + size_t(i)] = image.at(i, image.height - 1 - j);
     rows.push_back(std::move(base));
-    // (The lanes index texels with 32-bit integers: the whole chain must stay below 2^31.)
-    int64_t stored = 0;
+    // (The lanes index texels with 32-bit integers: the whole chain must stay below 2^31,
+    // checked before any level is averaged.)
+    int64_t offset = 0;
     for (int w = image.width, h = image.height;; w = std::max(1, w / 2), h = std::max(1, h / 2)) {
-        stored += int64_t((w + 3) / 4) * int64_t((h + 3) / 4) * kTileTexels;
-        if (w == 1 && h == 1) break;
-    }
-    if (stored > int64_t(INT32_MAX) - 64) throw std::invalid_argument("texture image has too many texels (its tiles and mipmaps need 2^31 or more)");
-    int offset = 0;
-    for (int w = image.width, h = image.height;; w = std::max(1, w / 2), h = std::max(1, h / 2)) {
-        if (!levels_.empty()) rows.push_back(downsample(rows.back(), levels_.back().width, levels_.back().height, w, h, srgb_));
         const int tiles_x = (w + 3) / 4, tiles_y = (h + 3) / 4;
-        levels_.push_back(Level{w, h, tiles_x, offset});
-        offset += tiles_x * tiles_y * kTileTexels;
+        levels_.push_back(Level{w, h, tiles_x, int(offset)});
+        offset += int64_t(tiles_x) * int64_t(tiles_y) * kTileTexels;
+        if (offset > int64_t(INT32_MAX) - 64) throw std::invalid_argument("texture image has too many texels (its tiles and mipmaps need 2^31 or more)");
         if (w == 1 && h == 1) break;
     }
+    for (size_t k = 1; k < levels_.size(); ++k)
+        rows.push_back(downsample(rows.back(), levels_[k - 1].width, levels_[k - 1].height, levels_[k].width, levels_[k].height, srgb_));
     for (size_t k = 0; k < 16; ++k) {
         const Level& l = levels_[std::min(k, levels_.size() - 1)];
         tables_.width[k] = l.width, tables_.height[k] = l.height, tables_.tiles_x[k] = l.tiles_x, tables_.offset[k] = l.offset;
