@@ -175,9 +175,11 @@ glm::vec4 Texture::sample_level(int level, glm::vec2 uv, const Sampler& s) const
     }
 }
 
-// The fixed-point lookup (texture.h "Precision"): the sample point in 1/256 texel steps, and
-// per channel, with texels a, b below and c, d above (b, d to the right) and weights fx, fy
-// in 0..255:
+// The fixed-point lookup (texture.h "Precision"): the sample point in 1/256 texel steps,
+//   x = floor(256 (u w)) - 128   (bilinear: texel i's center is at i + 0.5; nearest: - 0)
+// with u w rounded to a float once, so that on a power-of-two texture, where u w is exact,
+// each level's x is level 0's shifted right (sample_lanes). Then per channel, with texels
+// a, b below and c, d above (b, d to the right) and weights fx, fy in 0..255:
 //   bottom = 256 a + (b - a) fx,  top = 256 c + (d - c) fx     (exact, 0..65280)
 //   value  = bottom - (bottom fy >> 8) + (top fy >> 8)          (0..65280)
 // The last line is how sixteen-bit lanes compute bottom + (top - bottom) fy / 256 with two
@@ -185,9 +187,9 @@ glm::vec4 Texture::sample_level(int level, glm::vec2 uv, const Sampler& s) const
 template <Filter F>
 glm::ivec4 Texture::sample_level_fixed(int level, glm::vec2 uv, const Sampler& s) const {
     const Level& l = levels_[size_t(level)];
-    const float half = F == Filter::Nearest ? 0.0f : 0.5f;  // (texel i's center is at i + 0.5)
-    const int x = detail::floor_to_int((detail::reduce(uv.x, s.wrap_s) * float(l.width) - half) * 256.0f);
-    const int y = detail::floor_to_int((detail::reduce(uv.y, s.wrap_t) * float(l.height) - half) * 256.0f);
+    const int half = F == Filter::Nearest ? 0 : 128;
+    const int x = detail::floor_to_int(detail::reduce(uv.x, s.wrap_s) * float(l.width) * 256.0f) - half;
+    const int y = detail::floor_to_int(detail::reduce(uv.y, s.wrap_t) * float(l.height) * 256.0f) - half;
     const int fx = F == Filter::Nearest ? 0 : x & 255, fy = F == Filter::Nearest ? 0 : y & 255;
     const Footprint f = footprint(x >> 8, y >> 8, l.width, l.height, s);
     const uint32_t a = texels()[texel_index(l, f.ia, f.ja)], b = texels()[texel_index(l, f.ib, f.ja)];

@@ -71,8 +71,19 @@ auto on_best_path(const F& f) {
 using f8 = float __attribute__((vector_size(32)));
 using i8 = int32_t __attribute__((vector_size(32)));  // also the result of comparisons: -1 true, 0 false
 
-inline f8 splat(float x) { return f8{} + x; }
-inline i8 splat_i(int32_t x) { return i8{} + x; }
+// x in every lane, written as a shuffle of lane 0: inside the AVX2 copy (a function with
+// target("avx2") that flattens generic code into itself) GCC 12 builds `f8{} + x` from
+// inserts or through memory, but a shuffle becomes one vbroadcastss / vpbroadcastd.
+inline f8 splat(float x) {
+    using f4 = float __attribute__((vector_size(16)));
+    const f4 v = {x, 0.0f, 0.0f, 0.0f};
+    return __builtin_shufflevector(v, v, 0, 0, 0, 0, 0, 0, 0, 0);
+}
+inline i8 splat_i(int32_t x) {
+    using i4 = int32_t __attribute__((vector_size(16)));
+    const i4 v = {x, 0, 0, 0};
+    return __builtin_shufflevector(v, v, 0, 0, 0, 0, 0, 0, 0, 0);
+}
 inline const i8 kLaneIndex = {0, 1, 2, 3, 4, 5, 6, 7};
 
 // r[k] = v[lanes[k]]: GCC's __builtin_shuffle; clang has no run-time lane shuffle builtin.
