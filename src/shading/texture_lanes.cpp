@@ -28,12 +28,26 @@ inline i8 floor_small8(const f8& t) {
     return i + (simd::to_float(i) > t);  // (a true comparison is -1)
 }
 
+// floor(t) as a float, for |t| < 2^31: to_float(floor_small8(t)), or on the AVX2 path one
+// rounding instruction (plus 0, which turns its -0 for -0 into floor_small8's +0).
+template <bool Wide>
+inline f8 floor8(const f8& t) {
+    return simd::to_float(floor_small8(t));
+}
+#if SOFTRASTER_HAS_AVX2_PATH
+template <>
+[[gnu::target("avx2")]] inline f8 floor8<true>(const f8& t) {
+    return f8(_mm256_add_ps(_mm256_floor_ps(__m256(t)), _mm256_setzero_ps()));
+}
+#endif
+
 // detail::reduce on eight lanes (the wrap mode is the same for all).
+template <bool Wide>
 inline f8 reduce8(f8 u, Wrap w) {
     if (w == Wrap::Repeat || w == Wrap::Mirror) {
         const bool mirror = w == Wrap::Mirror;
         const f8 in = simd::select((u >= -1.0e6f) & (u <= 1.0e6f), u, simd::splat(0.0f));  // (out of range: 0, as reduce)
-        return in - (mirror ? 2.0f : 1.0f) * simd::to_float(floor_small8(in * (mirror ? 0.5f : 1.0f)));
+        return in - (mirror ? 2.0f : 1.0f) * floor8<Wide>(in * (mirror ? 0.5f : 1.0f));
     }
     const f8 c = simd::select(u < -1.0f, simd::splat(-1.0f), simd::select(u > 2.0f, simd::splat(2.0f), u));
     return simd::select(u == u, c, simd::splat(0.0f));
@@ -80,8 +94,10 @@ struct LaneLevels {
 };
 
 // Texture::texel_index on eight lanes.
-inline i8 tile_index8(const LaneLevels& l, const i8& i, const i8& j) {
-    return l.offset + ((j >> 2) * l.tiles_x + (i >> 2)) * Texture::kTileTexels + (j & 3) * Texture::kTileSide + (i & 3);
+// (A level's numbers per lane, or one level's for all.)
+template <class N>
+inline i8 tile_index8(const N& offset, const N& tiles_x, const i8& i, const i8& j) {
+    return offset + ((j >> 2) * tiles_x + (i >> 2)) * Texture::kTileTexels + (j & 3) * Texture::kTileSide + (i & 3);
 }
 
 // The four texels of each lane's bilinear footprint in the apron layout (texture.h): the
@@ -115,6 +131,40 @@ template <>
     texel[2] = i8(_mm256_unpacklo_epi64(cd01, cd23)), texel[3] = i8(_mm256_unpackhi_epi64(cd01, cd23));
 }
 #endif
+
+// select_lod on eight lanes, in two steps (anisotropic filtering shortens the footprint
+// between them). First the squared lengths of the footprint's x and y axes, in texels of
+// level 0 ...
+inline void footprint_axes8(const std::array<f8, 4>& d, float w, float h, f8& rx, f8& ry) {
+    const f8 ax = d[0] * w, bx = d[1] * h, ay = d[2] * w, by = d[3] * h;
+    rx = ax * ax + bx * bx, ry = ay * ay + by * by;
+}
+// ... then from rho^2 each lane's level or levels, and the second one's weight (minified:
+// rho^2 > 1; otherwise level 0 alone).
+struct LaneLod {
+    i8 level0, level1;
+    f8 weight;
+};
+template <bool Wide>
+inline LaneLod lane_lod(const f8& rho2, const i8& minified, MipFilter mip, int last) {
+    using simd::select, simd::splat, simd::splat_i, simd::to_float;
+    LaneLod r{splat_i(0), splat_i(0), splat(0.0f)};
+    const i8 bits = std::bit_cast<i8>(rho2);
+    const i8 exponent = ((bits >> 23) & 255) - 127;
+    if (mip == MipFilter::Nearest) {
+        const i8 l = (exponent + 1) >> 1;
+        r.level0 = r.level1 = select(minified, select(l < 0, splat_i(0), select(l > last, splat_i(last), l)), splat_i(0));
+    } else if (mip == MipFilter::Linear) {
+        const i8 mbits = (bits & 0x007fffff) | 0x3f800000;
+        const f8 lod = 0.5f * (to_float(exponent) + (std::bit_cast<f8>(mbits) - 1.0f));
+        const i8 i = simd::to_int(floor8<Wide>(lod));
+        const i8 inside = minified & (i >= 0) & (i < last);
+        r.level0 = select(minified & (i >= last), splat_i(last), select(inside, i, splat_i(0)));
+        r.level1 = select(inside, i + 1, r.level0);
+        r.weight = select(inside, lod - to_float(i), splat(0.0f));
+    }
+    return r;
+}
 
 // ---- the fixed-point filter on sixteen-bit lanes (sample_level_fixed)
 //
@@ -207,15 +257,15 @@ inline Fixed8 bilinear16(const i8 (&texels)[4], const i8& fx, const i8& fy) {
     return {blend16<Wide>(row(a.lo, b.lo, wx.lo), row(c.lo, d.lo, wx.lo), wy.lo), blend16<Wide>(row(a.hi, b.hi, wx.hi), row(c.hi, d.hi, wx.hi), wy.hi)};
 }
 
-#if SOFTRASTER_HAS_AVX2_PATH
-// ---- the common lookup, in AVX2
+// ---- the common lookup
 //
 // A power-of-two texture repeating on both axes, bilinear both ways, no anisotropy, in fixed
 // point, every lane on the same level(s): what real models and the corridor mostly ask for.
 // The body of sample_lanes with everything those conditions fix taken out (no level tables,
-// no wrap or filter choices per lane, a level's numbers as scalars), in fewer instructions
-// than the compiler finds for the general body: the same operations, the same bits
-// (Texture.EightLookupsAtOnceEqualOneAtATime). False if the lanes' levels differ.
+// no wrap or filter choices per lane, a level's numbers as scalars), and a small function of
+// its own (the general body's stack frame and dispatch would cost it a sixth of its time):
+// the same operations, the same bits (Texture.UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime).
+// False if the lanes' levels differ.
 struct PotLevels {
     const uint32_t* texels;
     const int32_t *width, *height, *tiles_x, *offset;  // the first 16 levels' (LevelTables)
@@ -223,76 +273,63 @@ struct PotLevels {
     float w, h;  // level 0's sides
 };
 
-// reduce8 (repeat), then level 0's sample point in 1/256 texel steps (exact: u in [0, 1], a
-// power-of-two side).
-[[gnu::target("avx2")]] inline __m256i pot_point_avx2(const f8& c, float side256) {
-    const __m256 in = _mm256_and_ps(__m256(c), _mm256_and_ps(_mm256_cmp_ps(__m256(c), _mm256_set1_ps(-1.0e6f), _CMP_GE_OQ),
-                                                             _mm256_cmp_ps(__m256(c), _mm256_set1_ps(1.0e6f), _CMP_LE_OQ)));
-    return _mm256_cvttps_epi32(_mm256_mul_ps(_mm256_sub_ps(in, _mm256_floor_ps(in)), _mm256_set1_ps(side256)));
+// Level k's lookup from level 0's sample point (fu, fv).
+template <bool Wide>
+inline Fixed8 pot_level(const PotLevels& t, const i8& fu, const i8& fv, int k) {
+    const i8 x = (fu >> std::min(k, t.log2_w)) - 128, y = (fv >> std::min(k, t.log2_h)) - 128;
+    const i8 i0 = (x >> 8) & (t.width[k] - 1), j0 = (y >> 8) & (t.height[k] - 1);
+    i8 texel[4];
+    load_footprints<Wide>(t.texels, tile_index8(t.offset[k], t.tiles_x[k], i0, j0), texel);
+    return bilinear16<Wide>(texel, x & 255, y & 255);
 }
-// Level k's lookup: its sample point is level 0's shifted right by k (up to a side of 1).
-[[gnu::target("avx2")]] inline Fixed8 pot_level_avx2(const PotLevels& t, const __m256i& fu, const __m256i& fv, int k) {
-    const __m256i x = _mm256_sub_epi32(_mm256_sra_epi32(fu, _mm_cvtsi32_si128(std::min(k, t.log2_w))), _mm256_set1_epi32(128));
-    const __m256i y = _mm256_sub_epi32(_mm256_sra_epi32(fv, _mm_cvtsi32_si128(std::min(k, t.log2_h))), _mm256_set1_epi32(128));
+#if SOFTRASTER_HAS_AVX2_PATH
+template <>
+[[gnu::target("avx2")]] inline Fixed8 pot_level<true>(const PotLevels& t, const i8& fu, const i8& fv, int k) {
+    const __m256i x = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fu), _mm_cvtsi32_si128(std::min(k, t.log2_w))), _mm256_set1_epi32(128));
+    const __m256i y = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fv), _mm_cvtsi32_si128(std::min(k, t.log2_h))), _mm256_set1_epi32(128));
     const __m256i i0 = _mm256_and_si256(_mm256_srai_epi32(x, 8), _mm256_set1_epi32(t.width[k] - 1));
     const __m256i j0 = _mm256_and_si256(_mm256_srai_epi32(y, 8), _mm256_set1_epi32(t.height[k] - 1));
-    // tile_index8: offset + ((j0 / 4) tiles_x + i0 / 4) 25 + (j0 % 4) 5 + i0 % 4
+    // tile_index8, as (((j0 / 4) tiles_x + i0 / 4) 5 + j0 % 4) 5 + i0 % 4 + offset
     const __m256i tile = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_srai_epi32(j0, 2), _mm256_set1_epi32(t.tiles_x[k])), _mm256_srai_epi32(i0, 2));
-    const __m256i three = _mm256_set1_epi32(3), row = _mm256_and_si256(j0, three);
-    const __m256i index = _mm256_add_epi32(_mm256_add_epi32(_mm256_mullo_epi32(tile, _mm256_set1_epi32(Texture::kTileTexels)), _mm256_set1_epi32(t.offset[k])),
-                                           _mm256_add_epi32(_mm256_add_epi32(_mm256_slli_epi32(row, 2), row), _mm256_and_si256(i0, three)));
+    const __m256i three = _mm256_set1_epi32(3), five = _mm256_set1_epi32(Texture::kTileSide);
+    const __m256i row = _mm256_add_epi32(_mm256_mullo_epi32(tile, five), _mm256_and_si256(j0, three));
+    const __m256i index = _mm256_add_epi32(_mm256_add_epi32(_mm256_mullo_epi32(row, five), _mm256_and_si256(i0, three)), _mm256_set1_epi32(t.offset[k]));
     i8 texel[4];
     load_footprints<true>(t.texels, i8(index), texel);
     const __m256i low = _mm256_set1_epi32(255);
     return bilinear16<true>(texel, i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low)));
 }
+#endif
 
-[[gnu::target("avx2")]] inline bool sample_uniform_avx2(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip,
-                                                         std::array<f8, 4>& rgba) {
-    const int last = t.levels - 1;
-    __m256i level0 = _mm256_setzero_si256();
-    __m256 weight = _mm256_setzero_ps();
-    if (mip != MipFilter::None) {  // select_lod, lane by lane
-        const __m256 w = _mm256_set1_ps(t.w), h = _mm256_set1_ps(t.h);
-        const __m256 ax = _mm256_mul_ps(__m256(d[0]), w), bx = _mm256_mul_ps(__m256(d[1]), h);
-        const __m256 ay = _mm256_mul_ps(__m256(d[2]), w), by = _mm256_mul_ps(__m256(d[3]), h);
-        const __m256 rx = _mm256_add_ps(_mm256_mul_ps(ax, ax), _mm256_mul_ps(bx, bx));
-        const __m256 ry = _mm256_add_ps(_mm256_mul_ps(ay, ay), _mm256_mul_ps(by, by));
-        const __m256 rho2 = _mm256_blendv_ps(ry, rx, _mm256_cmp_ps(rx, ry, _CMP_GT_OQ));
-        const __m256i minified = _mm256_castps_si256(_mm256_cmp_ps(rho2, _mm256_set1_ps(1.0f), _CMP_GT_OQ));
-        const __m256i bits = _mm256_castps_si256(rho2);
-        const __m256i exponent = _mm256_sub_epi32(_mm256_and_si256(_mm256_srli_epi32(bits, 23), _mm256_set1_epi32(255)), _mm256_set1_epi32(127));
-        const __m256i last8 = _mm256_set1_epi32(last);
-        if (mip == MipFilter::Nearest) {
-            const __m256i l = _mm256_srai_epi32(_mm256_add_epi32(exponent, _mm256_set1_epi32(1)), 1);
-            level0 = _mm256_and_si256(minified, _mm256_min_epi32(_mm256_max_epi32(l, _mm256_setzero_si256()), last8));
-        } else {
-            const __m256i mbits = _mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi32(0x007fffff)), _mm256_set1_epi32(0x3f800000));
-            const __m256 lod = _mm256_mul_ps(_mm256_set1_ps(0.5f), _mm256_add_ps(_mm256_cvtepi32_ps(exponent),
-                                                                                  _mm256_sub_ps(_mm256_castsi256_ps(mbits), _mm256_set1_ps(1.0f))));
-            const __m256i i = _mm256_cvttps_epi32(_mm256_floor_ps(lod));  // (floor_small8)
-            const __m256i inside = _mm256_and_si256(minified, _mm256_andnot_si256(_mm256_cmpgt_epi32(_mm256_setzero_si256(), i), _mm256_cmpgt_epi32(last8, i)));
-            const __m256i past = _mm256_and_si256(minified, _mm256_cmpgt_epi32(i, _mm256_set1_epi32(last - 1)));
-            level0 = _mm256_blendv_epi8(_mm256_and_si256(inside, i), last8, past);
-            weight = _mm256_and_ps(_mm256_castsi256_ps(inside), _mm256_sub_ps(lod, _mm256_cvtepi32_ps(i)));
-        }
+template <bool Wide>
+inline bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
+    using simd::splat, simd::splat_i, simd::to_int;
+    LaneLod lod{splat_i(0), splat_i(0), splat(0.0f)};
+    if (mip != MipFilter::None) {
+        f8 rx, ry;
+        footprint_axes8(d, t.w, t.h, rx, ry);
+        const f8 rho2 = simd::select(rx > ry, rx, ry);
+        lod = lane_lod<Wide>(rho2, rho2 > 1.0f, mip, t.levels - 1);
     }
-    const int level = _mm256_cvtsi256_si32(level0);
-    if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(level0, _mm256_set1_epi32(level))) != -1) return false;
-    const bool two = _mm256_movemask_ps(_mm256_cmp_ps(weight, _mm256_setzero_ps(), _CMP_NEQ_UQ)) != 0;
+    const int level = lod.level0[0];
+    if (simd::any(lod.level0 != level)) return false;
+    const bool two = simd::any(lod.weight != 0.0f);
     if (level + (two ? 1 : 0) >= 16) return false;  // (past the tables)
-    const __m256i fu = pot_point_avx2(u, 256.0f * t.w), fv = pot_point_avx2(v, 256.0f * t.h);
-    Fixed8 f = pot_level_avx2(t, fu, fv, level);
+    // Level 0's sample point in 1/256 texel steps (sample_level_fixed): exact, u being in
+    // [0, 1] and the side a power of two, so that truncation is the floor; level k's is it
+    // shifted right by k, up to a side of 1.
+    const i8 fu = to_int(reduce8<Wide>(u, Wrap::Repeat) * (256.0f * t.w)), fv = to_int(reduce8<Wide>(v, Wrap::Repeat) * (256.0f * t.h));
+    auto at_level = [&](int k) { return pot_level<Wide>(t, fu, fv, k); };
+    Fixed8 f = at_level(level);
     if (two) {
-        const Fixed8 f1 = pot_level_avx2(t, fu, fv, level + 1);
+        const Fixed8 f1 = at_level(level + 1);
         Fixed8 w;
-        spread<true>(i8(_mm256_slli_epi32(_mm256_cvttps_epi32(_mm256_mul_ps(weight, _mm256_set1_ps(256.0f))), 8)), w);
-        f = {blend16<true>(f.lo, f1.lo, w.lo), blend16<true>(f.hi, f1.hi, w.hi)};
+        spread<Wide>(to_int(lod.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
+        f = {blend16<Wide>(f.lo, f1.lo, w.lo), blend16<Wide>(f.hi, f1.hi, w.hi)};
     }
-    unit_of_fixed8<true>(f, rgba);
+    unit_of_fixed8<Wide>(f, rgba);
     return true;
 }
-#endif
 
 }  // namespace
 
@@ -308,8 +345,8 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         i8 level0 = splat_i(0), level1 = splat_i(0), nearest = splat_i(s.mag == Filter::Nearest ? -1 : 0), probes = splat_i(1);
         f8 weight = splat(0.0f), axis_u = splat(0.0f), axis_v = splat(0.0f);
         if (s.uses_lod()) {
-            const f8 ax = d[0] * float(width()), bx = d[1] * float(height()), ay = d[2] * float(width()), by = d[3] * float(height());
-            const f8 rx = ax * ax + bx * bx, ry = ay * ay + by * by;
+            f8 rx, ry;
+            footprint_axes8(d, float(width()), float(height()), rx, ry);
             f8 rho2 = select(rx > ry, rx, ry);
             const i8 minified = rho2 > 1.0f;
             nearest = select(minified, splat_i(s.min == Filter::Nearest ? -1 : 0), nearest);
@@ -321,21 +358,8 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
                 axis_u = select(rx > ry, d[0], d[2]), axis_v = select(rx > ry, d[1], d[3]);
                 rho2 = rho2 / to_float(probes * probes);
             }
-            const i8 bits = std::bit_cast<i8>(rho2);
-            const i8 exponent = ((bits >> 23) & 255) - 127;
-            const int last = levels() - 1;
-            if (s.mip == MipFilter::Nearest) {
-                const i8 l = (exponent + 1) >> 1;
-                level0 = level1 = select(minified, select(l < 0, splat_i(0), select(l > last, splat_i(last), l)), splat_i(0));
-            } else if (s.mip == MipFilter::Linear) {
-                const i8 mbits = (bits & 0x007fffff) | 0x3f800000;
-                const f8 lod = 0.5f * (to_float(exponent) + (std::bit_cast<f8>(mbits) - 1.0f));
-                const i8 i = floor_small8(lod);
-                const i8 inside = minified & (i >= 0) & (i < last);
-                level0 = select(minified & (i >= last), splat_i(last), select(inside, i, splat_i(0)));
-                level1 = select(inside, i + 1, level0);
-                weight = select(inside, lod - to_float(i), splat(0.0f));
-            }
+            const LaneLod lod = lane_lod<Wide>(rho2, minified, s.mip, levels() - 1);
+            level0 = lod.level0, level1 = lod.level1, weight = lod.weight;
         }
         const bool two_levels = s.mip == MipFilter::Linear && simd::any(weight != 0.0f);
         // (Pot: log2 of level 0's sides.)
@@ -382,7 +406,7 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
             const i8 is[4] = {ia, ib, ia, ib}, js[4] = {ja, ja, jb, jb};
             for (int t = 0; t < 4; ++t) {
                 border[t] = (is[t] < 0) | (js[t] < 0);  // (never without a border wrap mode)
-                const i8 index = tile_index8(l, is[t], js[t]);
+                const i8 index = tile_index8(l.offset, l.tiles_x, is[t], js[t]);
                 gather<Wide>(texels, has_border ? select(border[t], splat_i(0), index) : index, texel[t]);
             }
         };
@@ -407,7 +431,7 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
             i8 texel[4];
             if (apron) {
                 const i8 i0 = apron_axis(x >> 8, l.width, wrap_s, fx), j0 = apron_axis(y >> 8, l.height, wrap_t, fy);
-                load_footprints<Wide>(texels, tile_index8(l, i0, j0), texel);
+                load_footprints<Wide>(texels, tile_index8(l.offset, l.tiles_x, i0, j0), texel);
             } else {
                 i8 border[4];
                 footprint(l, x >> 8, y >> 8, texel, border);
@@ -460,13 +484,13 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         };
         if constexpr (!Aniso) {
             const LaneLevels levels0 = lane_levels(level0);
-            return lookup_reduced(levels0, two_levels ? lane_levels(level1) : levels0, reduce8(u, wrap_s), reduce8(v, wrap_t), rgba);
+            return lookup_reduced(levels0, two_levels ? lane_levels(level1) : levels0, reduce8<Wide>(u, wrap_s), reduce8<Wide>(v, wrap_t), rgba);
         }
         // Anisotropic: the same lookup at each probe (sample()'s loop); a lane adds its k-th
         // only while k < its N.
         const LaneLevels levels0 = lane_levels(level0), levels1 = two_levels ? lane_levels(level1) : levels0;
         auto lookup = [&](const f8& pu, const f8& pv, std::array<f8, 4>& out) {
-            lookup_reduced(levels0, levels1, reduce8(pu, wrap_s), reduce8(pv, wrap_t), out);
+            lookup_reduced(levels0, levels1, reduce8<Wide>(pu, wrap_s), reduce8<Wide>(pv, wrap_t), out);
         };
         int most_probes = 1;
         for (int lane = 0; lane < simd::kLanes; ++lane) most_probes = std::max(most_probes, int(probes[lane]));
@@ -501,22 +525,13 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
 
 // In the CPU's best copy (simd.h).
 void Texture::sample8(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
-#if SOFTRASTER_HAS_AVX2_PATH
-    // The common lookup first, in a copy of its own (a small function: the general body's
-    // stack frame and dispatch would cost it a sixth of its time).
+    // The common lookup first, in a copy of its own (sample_uniform).
     if (!srgb_ && pot_ && s.wrap_s == Wrap::Repeat && s.wrap_t == Wrap::Repeat && s.mag == Filter::Bilinear && s.min == Filter::Bilinear &&
         s.max_anisotropy <= 1) {
-        const bool done = simd::on_best_path([&]<bool Wide>() {
-            if constexpr (Wide) {
-                const PotLevels t{texels(), tables_.width.data(), tables_.height.data(), tables_.tiles_x.data(), tables_.offset.data(),
-                                  levels(), std::countr_zero(unsigned(width())), std::countr_zero(unsigned(height())), float(width()), float(height())};
-                return sample_uniform_avx2(t, u, v, d, s.mip, rgba);
-            }
-            return false;
-        });
-        if (done) return;
+        const PotLevels t{texels(), tables_.width.data(), tables_.height.data(), tables_.tiles_x.data(), tables_.offset.data(),
+                          levels(), std::countr_zero(unsigned(width())), std::countr_zero(unsigned(height())), float(width()), float(height())};
+        if (simd::on_best_path([&]<bool Wide>() { return sample_uniform<Wide>(t, u, v, d, s.mip, rgba); })) return;
     }
-#endif
     simd::on_best_path([&]<bool Wide>() {
         if (srgb_) sample_lanes<Wide, true>(u, v, d, s, rgba);
         else sample_lanes<Wide, false>(u, v, d, s, rgba);

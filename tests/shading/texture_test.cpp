@@ -371,36 +371,43 @@ TEST(Texture, EightLookupsAtOnceEqualOneAtATime) {
     }
 }
 
-// The common case has a path of its own (sample_uniform_avx2: a power-of-two texture that
+// The common case has a path of its own (sample_uniform: a power-of-two texture that
 // repeats, bilinear both ways, every lane on the same levels): it too gives sample()'s bits,
-// on square and long textures (whose levels stop halving one side at 1), for footprints
-// from far below a texel to far past the last level, and for coordinates of any size.
+// on both CPU paths, on square and long textures (whose levels stop halving one side at 1),
+// for footprints from far below a texel to far past the last level, and for coordinates of
+// any size.
 TEST(Texture, UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> coord(-40.0f, 40.0f), log_scale(-14.0f, 3.0f), unit(-1.0f, 1.0f), jitter(0.97f, 1.03f);
+    auto check = [&](const Texture& t, const Sampler& s, int trial, const char* path) {
+        simd::f8 u, v;
+        std::array<simd::f8, 4> d;
+        const float scale = std::exp2(log_scale(rng));
+        const float base[4] = {scale * unit(rng), scale * unit(rng), scale * unit(rng), scale * unit(rng)};
+        for (int l = 0; l < simd::kLanes; ++l) {
+            u[l] = trial % 7 == 0 ? coord(rng) * 1.0e4f : coord(rng), v[l] = coord(rng);
+            for (size_t k = 0; k < 4; ++k) d[k][l] = base[k] * (trial % 2 ? 1.0f : jitter(rng));  // (neighbours: mostly one level)
+        }
+        std::array<simd::f8, 4> got;
+        t.sample8(u, v, d, s, got);
+        for (int l = 0; l < simd::kLanes; ++l) {
+            const glm::vec4 want = t.sample(glm::vec2(u[l], v[l]), UvDerivatives{d[0][l], d[1][l], d[2][l], d[3][l]}, s);
+            for (int k = 0; k < 4; ++k)
+                ASSERT_EQ(std::bit_cast<uint32_t>(got[size_t(k)][l]), std::bit_cast<uint32_t>(want[k]))
+                    << t.width() << "x" << t.height() << " " << path << " mip " << int(s.mip) << " trial " << trial << " lane " << l << " uv " << u[l]
+                    << "," << v[l];
+        }
+    };
     for (const auto& [w, h] : {std::pair{64, 64}, std::pair{128, 8}, std::pair{2, 256}, std::pair{1, 1}}) {
         const Texture t = pattern_texture(w, h);
-        for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear}) {
-            const Sampler s{Filter::Bilinear, Filter::Bilinear, mip, Wrap::Repeat, Wrap::Repeat, glm::vec4(0.0f), 1};
-            for (int trial = 0; trial < 400; ++trial) {
-                simd::f8 u, v;
-                std::array<simd::f8, 4> d;
-                const float scale = std::exp2(log_scale(rng));
-                const float base[4] = {scale * unit(rng), scale * unit(rng), scale * unit(rng), scale * unit(rng)};
-                for (int l = 0; l < simd::kLanes; ++l) {
-                    u[l] = trial % 7 == 0 ? coord(rng) * 1.0e4f : coord(rng), v[l] = coord(rng);
-                    for (size_t k = 0; k < 4; ++k) d[k][l] = base[k] * (trial % 2 ? 1.0f : jitter(rng));  // (neighbours: mostly one level)
-                }
-                std::array<simd::f8, 4> got;
-                t.sample8(u, v, d, s, got);
-                for (int l = 0; l < simd::kLanes; ++l) {
-                    const glm::vec4 want = t.sample(glm::vec2(u[l], v[l]), UvDerivatives{d[0][l], d[1][l], d[2][l], d[3][l]}, s);
-                    for (int k = 0; k < 4; ++k)
-                        ASSERT_EQ(std::bit_cast<uint32_t>(got[size_t(k)][l]), std::bit_cast<uint32_t>(want[k]))
-                            << w << "x" << h << " mip " << int(mip) << " trial " << trial << " lane " << l << " uv " << u[l] << "," << v[l];
-                }
-            }
+        for (bool generic : {false, true}) {
+            simd::use_generic_path(generic);
+            for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear})
+                for (int trial = 0; trial < 400; ++trial)
+                    check(t, Sampler{Filter::Bilinear, Filter::Bilinear, mip, Wrap::Repeat, Wrap::Repeat, glm::vec4(0.0f), 1}, trial,
+                          generic ? "generic" : "best");
         }
+        simd::use_generic_path(false);
     }
 }
 
