@@ -29,15 +29,16 @@ inline i8 floor_small8(const f8& t) {
 }
 
 // floor(t) as a float, for |t| < 2^31: to_float(floor_small8(t)), or on the AVX2 path one
-// rounding instruction (plus 0, which turns its -0 for -0 into floor_small8's +0).
+// rounding instruction (plus 0, which turns its -0 for -0 into floor_small8's +0). (The
+// result by reference: see gather.)
 template <bool Wide>
-inline f8 floor8(const f8& t) {
-    return simd::to_float(floor_small8(t));
+inline void floor8(const f8& t, f8& out) {
+    out = simd::to_float(floor_small8(t));
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 template <>
-[[gnu::target("avx2")]] inline f8 floor8<true>(const f8& t) {
-    return f8(_mm256_add_ps(_mm256_floor_ps(__m256(t)), _mm256_setzero_ps()));
+[[gnu::target("avx2")]] inline void floor8<true>(const f8& t, f8& out) {
+    out = f8(_mm256_add_ps(_mm256_floor_ps(__m256(t)), _mm256_setzero_ps()));
 }
 #endif
 
@@ -47,7 +48,9 @@ inline f8 reduce8(f8 u, Wrap w) {
     if (w == Wrap::Repeat || w == Wrap::Mirror) {
         const bool mirror = w == Wrap::Mirror;
         const f8 in = simd::select((u >= -1.0e6f) & (u <= 1.0e6f), u, simd::splat(0.0f));  // (out of range: 0, as reduce)
-        return in - (mirror ? 2.0f : 1.0f) * floor8<Wide>(in * (mirror ? 0.5f : 1.0f));
+        f8 whole;
+        floor8<Wide>(in * (mirror ? 0.5f : 1.0f), whole);
+        return in - (mirror ? 2.0f : 1.0f) * whole;
     }
     const f8 c = simd::select(u < -1.0f, simd::splat(-1.0f), simd::select(u > 2.0f, simd::splat(2.0f), u));
     return simd::select(u == u, c, simd::splat(0.0f));
@@ -157,7 +160,9 @@ inline LaneLod lane_lod(const f8& rho2, const i8& minified, MipFilter mip, int l
     } else if (mip == MipFilter::Linear) {
         const i8 mbits = (bits & 0x007fffff) | 0x3f800000;
         const f8 lod = 0.5f * (to_float(exponent) + (std::bit_cast<f8>(mbits) - 1.0f));
-        const i8 i = simd::to_int(floor8<Wide>(lod));
+        f8 whole;
+        floor8<Wide>(lod, whole);
+        const i8 i = simd::to_int(whole);
         const i8 inside = minified & (i >= 0) & (i < last);
         r.level0 = select(minified & (i >= last), splat_i(last), select(inside, i, splat_i(0)));
         r.level1 = select(inside, i + 1, r.level0);
@@ -273,18 +278,19 @@ struct PotLevels {
     float w, h;  // level 0's sides
 };
 
-// Level k's lookup from level 0's sample point (fu, fv).
+// Level k's lookup from level 0's sample point (fu, fv). (The result by reference: see
+// gather.)
 template <bool Wide>
-inline Fixed8 pot_level(const PotLevels& t, const i8& fu, const i8& fv, int k) {
+inline void pot_level(const PotLevels& t, const i8& fu, const i8& fv, int k, Fixed8& out) {
     const i8 x = (fu >> std::min(k, t.log2_w)) - 128, y = (fv >> std::min(k, t.log2_h)) - 128;
     const i8 i0 = (x >> 8) & (t.width[k] - 1), j0 = (y >> 8) & (t.height[k] - 1);
     i8 texel[4];
     load_footprints<Wide>(t.texels, tile_index8(t.offset[k], t.tiles_x[k], i0, j0), texel);
-    return bilinear16<Wide>(texel, x & 255, y & 255);
+    out = bilinear16<Wide>(texel, x & 255, y & 255);
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 template <>
-[[gnu::target("avx2")]] inline Fixed8 pot_level<true>(const PotLevels& t, const i8& fu, const i8& fv, int k) {
+[[gnu::target("avx2")]] inline void pot_level<true>(const PotLevels& t, const i8& fu, const i8& fv, int k, Fixed8& out) {
     const __m256i x = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fu), _mm_cvtsi32_si128(std::min(k, t.log2_w))), _mm256_set1_epi32(128));
     const __m256i y = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fv), _mm_cvtsi32_si128(std::min(k, t.log2_h))), _mm256_set1_epi32(128));
     const __m256i i0 = _mm256_and_si256(_mm256_srai_epi32(x, 8), _mm256_set1_epi32(t.width[k] - 1));
@@ -297,7 +303,7 @@ template <>
     i8 texel[4];
     load_footprints<true>(t.texels, i8(index), texel);
     const __m256i low = _mm256_set1_epi32(255);
-    return bilinear16<true>(texel, i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low)));
+    out = bilinear16<true>(texel, i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low)));
 }
 #endif
 
@@ -319,7 +325,11 @@ inline bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const s
     // [0, 1] and the side a power of two, so that truncation is the floor; level k's is it
     // shifted right by k, up to a side of 1.
     const i8 fu = to_int(reduce8<Wide>(u, Wrap::Repeat) * (256.0f * t.w)), fv = to_int(reduce8<Wide>(v, Wrap::Repeat) * (256.0f * t.h));
-    auto at_level = [&](int k) { return pot_level<Wide>(t, fu, fv, k); };
+    auto at_level = [&](int k) {
+        Fixed8 f;
+        pot_level<Wide>(t, fu, fv, k, f);
+        return f;
+    };
     Fixed8 f = at_level(level);
     if (two) {
         const Fixed8 f1 = at_level(level + 1);

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <random>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -78,6 +79,17 @@ Texture pattern_texture(int w, int h, ColorSpace color = ColorSpace::Linear) {
 UvDerivatives isotropic(float texels_per_pixel, int size) {
     const float d = texels_per_pixel / float(size);
     return {d, 0.0f, 0.0f, d};
+}
+// Eight lookups at once against sample(), lane by lane, bit for bit; `what` names the case.
+void expect_eight_equal_one_at_a_time(const Texture& t, const Sampler& s, const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d,
+                                      const std::string& what) {
+    std::array<simd::f8, 4> got;
+    t.sample8(u, v, d, s, got);
+    for (int l = 0; l < simd::kLanes; ++l) {
+        const glm::vec4 want = t.sample(glm::vec2(u[l], v[l]), UvDerivatives{d[0][l], d[1][l], d[2][l], d[3][l]}, s);
+        for (int k = 0; k < 4; ++k)
+            ASSERT_EQ(std::bit_cast<uint32_t>(got[size_t(k)][l]), std::bit_cast<uint32_t>(want[k])) << what << " lane " << l << " uv " << u[l] << "," << v[l];
+    }
 }
 }  // namespace
 
@@ -355,15 +367,11 @@ TEST(Texture, EightLookupsAtOnceEqualOneAtATime) {
                                         if (trial >= 10 && l > 0)  // all lanes one footprint: one level for all
                                             for (auto& dk : d) dk[l] = dk[0];
                                     }
-                                    std::array<simd::f8, 4> got;
-                                    t.sample8(u, v, d, s, got);
-                                    for (int l = 0; l < simd::kLanes; ++l) {
-                                        const glm::vec4 want = t.sample(glm::vec2(u[l], v[l]), UvDerivatives{d[0][l], d[1][l], d[2][l], d[3][l]}, s);
-                                        for (int k = 0; k < 4; ++k)
-                                            ASSERT_EQ(std::bit_cast<uint32_t>(got[size_t(k)][l]), std::bit_cast<uint32_t>(want[k]))
-                                                << w << "x" << h << " generic " << generic << " mag " << int(mag) << " min " << int(min) << " mip "
-                                                << int(mip) << " wrap " << int(ws) << "," << int(wt) << " aniso " << aniso << " lane " << l << " uv " << u[l] << "," << v[l];
-                                    }
+                                    expect_eight_equal_one_at_a_time(
+                                        t, s, u, v, d,
+                                        std::to_string(w) + "x" + std::to_string(h) + " generic " + std::to_string(generic) + " mag " + std::to_string(int(mag)) +
+                                            " min " + std::to_string(int(min)) + " mip " + std::to_string(int(mip)) + " wrap " + std::to_string(int(ws)) + "," +
+                                            std::to_string(int(wt)) + " aniso " + std::to_string(aniso));
                                 }
                             }
         }
@@ -388,15 +396,9 @@ TEST(Texture, UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime) {
             u[l] = trial % 7 == 0 ? coord(rng) * 1.0e4f : coord(rng), v[l] = coord(rng);
             for (size_t k = 0; k < 4; ++k) d[k][l] = base[k] * (trial % 2 ? 1.0f : jitter(rng));  // (neighbours: mostly one level)
         }
-        std::array<simd::f8, 4> got;
-        t.sample8(u, v, d, s, got);
-        for (int l = 0; l < simd::kLanes; ++l) {
-            const glm::vec4 want = t.sample(glm::vec2(u[l], v[l]), UvDerivatives{d[0][l], d[1][l], d[2][l], d[3][l]}, s);
-            for (int k = 0; k < 4; ++k)
-                ASSERT_EQ(std::bit_cast<uint32_t>(got[size_t(k)][l]), std::bit_cast<uint32_t>(want[k]))
-                    << t.width() << "x" << t.height() << " " << path << " mip " << int(s.mip) << " trial " << trial << " lane " << l << " uv " << u[l]
-                    << "," << v[l];
-        }
+        expect_eight_equal_one_at_a_time(t, s, u, v, d,
+                                         std::to_string(t.width()) + "x" + std::to_string(t.height()) + " " + path + " mip " + std::to_string(int(s.mip)) +
+                                             " trial " + std::to_string(trial));
     };
     for (const auto& [w, h] : {std::pair{64, 64}, std::pair{128, 8}, std::pair{2, 256}, std::pair{1, 1}}) {
         const Texture t = pattern_texture(w, h);
