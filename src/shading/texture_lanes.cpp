@@ -89,11 +89,9 @@ template <>
 }
 #endif
 
-// A level's numbers, per lane; on a power-of-two texture also how far its sides are halved
-// from level 0's (the level, up to a side of 1).
+// A level's numbers, per lane.
 struct LaneLevels {
     i8 width, height, tiles_x, offset;
-    i8 shift_u, shift_v;
 };
 
 // Texture::texel_index on eight lanes.
@@ -372,11 +370,8 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
             level0 = lod.level0, level1 = lod.level1, weight = lod.weight;
         }
         const bool two_levels = s.mip == MipFilter::Linear && simd::any(weight != 0.0f);
-        // (Pot: log2 of level 0's sides.)
-        const int log2_w = std::countr_zero(unsigned(width())), log2_h = std::countr_zero(unsigned(height()));
         auto lane_levels = [&](i8 level) {
             LaneLevels r;  // (not zeroed: every branch sets every number)
-            r.shift_u = select(level < log2_w, level, splat_i(log2_w)), r.shift_v = select(level < log2_h, level, splat_i(log2_h));
             if (!simd::any(level != level[0])) {  // one level for all (neighbouring quads mostly agree)
                 const Level& l = levels_[size_t(level[0])];
                 r.width = splat_i(l.width), r.height = splat_i(l.height), r.tiles_x = splat_i(l.tiles_x), r.offset = splat_i(l.offset);
@@ -432,11 +427,9 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         };
         // One level's lookup: in fixed point (sample_level_fixed; a Fixed8 result) ...
         auto at_level_fixed = [&](const LaneLevels& l, const f8& ur, const f8& vr) {
-            // The sample point in 1/256 texel steps (sample_level_fixed). On a power-of-two
-            // texture u w is exact, and a level's point is level 0's shifted right: floor(a / 2^k)
-            // = floor(a) >> k. (u is in [0, 1] there: truncation is the floor.)
-            const i8 x = (Pot ? simd::to_int(ur * float(256 * width())) >> l.shift_u : floor_small8(ur * to_float(l.width) * 256.0f)) - half256;
-            const i8 y = (Pot ? simd::to_int(vr * float(256 * height())) >> l.shift_v : floor_small8(vr * to_float(l.height) * 256.0f)) - half256;
+            // The sample point in 1/256 texel steps (sample_level_fixed; sample_uniform takes
+            // a power-of-two texture's from level 0's).
+            const i8 x = floor_small8(ur * to_float(l.width) * 256.0f) - half256, y = floor_small8(vr * to_float(l.height) * 256.0f) - half256;
             i8 fx = select(nearest, splat_i(0), x & 255), fy = select(nearest, splat_i(0), y & 255);
             i8 texel[4];
             if (apron) {
