@@ -89,6 +89,30 @@ template <>
 }
 #endif
 
+// A texel vector's channels as floats in [0, 1] (sample_level): r, g, b through the sRGB
+// decode table (srgb.h; a gather each) on an sRGB texture, else / 255.
+template <bool Wide, bool Srgb>
+inline void texel_channels(const i8& texel, const uint32_t* decode, std::array<f8, 4>& c) {
+    for (int k = 0; k < 4; ++k) {
+        const i8 byte = (texel >> (8 * k)) & 255;
+        if (Srgb && k < 3) {
+            i8 bits;
+            gather<Wide>(decode, byte, bits);
+            c[size_t(k)] = std::bit_cast<f8>(bits);
+        } else {
+            c[size_t(k)] = simd::to_float(byte) * (1.0f / 255.0f);
+        }
+    }
+}
+// sample_level's bilinear filter of the footprint's four texels (lower-left, lower-right,
+// upper-left, upper-right), in float.
+inline void bilinear_float(const std::array<f8, 4> (&c)[4], const f8& fx, const f8& fy, std::array<f8, 4>& out) {
+    for (size_t k = 0; k < 4; ++k) {
+        const f8 bottom = c[0][k] * (1.0f - fx) + c[1][k] * fx, top = c[2][k] * (1.0f - fx) + c[3][k] * fx;
+        out[k] = bottom * (1.0f - fy) + top * fy;
+    }
+}
+
 // A level's numbers, per lane.
 struct LaneLevels {
     i8 width, height, tiles_x, offset;
@@ -117,7 +141,7 @@ inline void load_footprints(const uint32_t* p, const i8& index, i8 (&texel)[4]) 
 // into the footprint's texels across the lanes: far cheaper here than four gathers.
 template <>
 [[gnu::target("avx2")]] inline void load_footprints<true>(const uint32_t* p, const i8& index, i8 (&texel)[4]) {
-    alignas(32) int32_t at[simd::kLanes];
+    alignas(32) uint32_t at[simd::kLanes];  // (unsigned: no sign extension per lane)
     _mm256_store_si256(reinterpret_cast<__m256i*>(at), __m256i(index));
     auto lane = [&](int k) {
         const uint32_t* t = p + at[k];
@@ -305,9 +329,15 @@ template <>
 }
 #endif
 
+// The level(s) the lanes read, when all read the same: select_lod's, on eight lanes.
+struct UniformLevels {
+    int level;
+    bool two;  // a second level, level + 1, with these weights
+    f8 weight;
+};
 template <bool Wide>
-inline bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
-    using simd::splat, simd::splat_i, simd::to_int;
+inline bool uniform_levels(const PotLevels& t, const std::array<f8, 4>& d, MipFilter mip, UniformLevels& out) {
+    using simd::splat, simd::splat_i;
     LaneLod lod{splat_i(0), splat_i(0), splat(0.0f)};
     if (mip != MipFilter::None) {
         f8 rx, ry;
@@ -315,10 +345,19 @@ inline bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const s
         const f8 rho2 = simd::select(rx > ry, rx, ry);
         lod = lane_lod<Wide>(rho2, rho2 > 1.0f, mip, t.levels - 1);
     }
-    const int level = lod.level0[0];
-    if (simd::any(lod.level0 != level)) return false;
-    const bool two = simd::any(lod.weight != 0.0f);
-    if (level + (two ? 1 : 0) >= 16) return false;  // (past the tables)
+    out.level = lod.level0[0];
+    if (simd::any(lod.level0 != out.level)) return false;
+    out.two = simd::any(lod.weight != 0.0f);
+    out.weight = lod.weight;
+    return out.level + (out.two ? 1 : 0) < 16;  // (past the tables otherwise)
+}
+
+// Linear textures: the fixed-point filter (sample_level_fixed).
+template <bool Wide>
+inline bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
+    using simd::to_int;
+    UniformLevels l;
+    if (!uniform_levels<Wide>(t, d, mip, l)) return false;
     // Level 0's sample point in 1/256 texel steps (sample_level_fixed): exact, u being in
     // [0, 1] and the side a power of two, so that truncation is the floor; level k's is it
     // shifted right by k, up to a side of 1.
@@ -328,14 +367,44 @@ inline bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const s
         pot_level<Wide>(t, fu, fv, k, f);
         return f;
     };
-    Fixed8 f = at_level(level);
-    if (two) {
-        const Fixed8 f1 = at_level(level + 1);
+    Fixed8 f = at_level(l.level);
+    if (l.two) {
+        const Fixed8 f1 = at_level(l.level + 1);
         Fixed8 w;
-        spread<Wide>(to_int(lod.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
+        spread<Wide>(to_int(l.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
         f = {blend16<Wide>(f.lo, f1.lo, w.lo), blend16<Wide>(f.hi, f1.hi, w.hi)};
     }
     unit_of_fixed8<Wide>(f, rgba);
+    return true;
+}
+
+// sRGB textures: each texel decoded through the table (a gather per channel), then the
+// float filter (sample_level), as the general body computes them.
+template <bool Wide>
+inline void srgb_level(const PotLevels& t, const uint32_t* decode, const f8& ur, const f8& vr, int level, std::array<f8, 4>& out) {
+    using simd::to_float;
+    const int w = t.width[level], h = t.height[level];
+    const f8 x = ur * float(w) - 0.5f, y = vr * float(h) - 0.5f;
+    const i8 i0 = floor_small8(x), j0 = floor_small8(y);
+    const f8 fx = x - to_float(i0), fy = y - to_float(j0);
+    i8 texel[4];
+    load_footprints<Wide>(t.texels, tile_index8(t.offset[level], t.tiles_x[level], i0 & (w - 1), j0 & (h - 1)), texel);
+    std::array<f8, 4> c[4];
+    for (size_t p = 0; p < 4; ++p) texel_channels<Wide, true>(texel[p], decode, c[p]);
+    bilinear_float(c, fx, fy, out);
+}
+template <bool Wide>
+inline bool sample_uniform_srgb(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
+    UniformLevels l;
+    if (!uniform_levels<Wide>(t, d, mip, l)) return false;
+    const f8 ur = reduce8<Wide>(u, Wrap::Repeat), vr = reduce8<Wide>(v, Wrap::Repeat);
+    const uint32_t* decode = reinterpret_cast<const uint32_t*>(srgb::tables().decode.data());
+    srgb_level<Wide>(t, decode, ur, vr, l.level, rgba);
+    if (l.two) {
+        std::array<f8, 4> c1;
+        srgb_level<Wide>(t, decode, ur, vr, l.level + 1, c1);
+        for (size_t k = 0; k < 4; ++k) rgba[k] = rgba[k] + (c1[k] - rgba[k]) * l.weight;
+    }
     return true;
 }
 
@@ -400,8 +469,8 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         const f8 half = select(nearest, splat(0.0f), splat(0.5f));
         const i8 half256 = select(nearest, splat_i(0), splat_i(128));  // (the same in 1/256 steps)
         const uint32_t* texels = this->texels();
-        // (sRGB textures only: a call here would cost every lookup a call and its spills.)
-        const float* decode = Srgb ? srgb::tables().decode.data() : nullptr;
+        // (The table's address once: srgb::tables() is a call.)
+        const uint32_t* decode = Srgb ? reinterpret_cast<const uint32_t*>(srgb::tables().decode.data()) : nullptr;
         const bool has_border = wrap_s == Wrap::Border || wrap_t == Wrap::Border;
         // The footprint's four texels, (ia, ja), (ib, ja), (ia, jb), (ib, jb), from the texel
         // below-left of the sample point, and which are the border color.
@@ -449,21 +518,12 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
             i8 texel[4], border[4];
             footprint(l, i0, j0, texel, border);
             std::array<f8, 4> c[4];
-            for (int t = 0; t < 4; ++t)
-                for (int k = 0; k < 4; ++k) {
-                    f8 value;
-                    if (Srgb && k < 3) {  // decoded texel by texel, before the filter
-                        const i8 byte = (texel[t] >> (8 * k)) & 255;
-                        for (int lane = 0; lane < simd::kLanes; ++lane) value[lane] = decode[size_t(byte[lane])];
-                    } else {
-                        value = to_float((texel[t] >> (8 * k)) & 255) * (1.0f / 255.0f);
-                    }
-                    c[t][size_t(k)] = has_border ? select(border[t], splat(s.border[k]), value) : value;
-                }
-            for (size_t k = 0; k < 4; ++k) {
-                const f8 bottom = c[0][k] * (1.0f - fx) + c[1][k] * fx, top = c[2][k] * (1.0f - fx) + c[3][k] * fx;
-                out[k] = bottom * (1.0f - fy) + top * fy;
+            for (size_t t = 0; t < 4; ++t) {
+                texel_channels<Wide, Srgb>(texel[t], decode, c[t]);
+                if (has_border)
+                    for (size_t k = 0; k < 4; ++k) c[t][k] = select(border[t], splat(s.border[int(k)]), c[t][k]);
             }
+            bilinear_float(c, fx, fy, out);
         };
         // The lookup at (ur, vr) in the lanes' level(s), as floats.
         auto lookup_reduced = [&](const LaneLevels& levels0, const LaneLevels& levels1, const f8& ur, const f8& vr, std::array<f8, 4>& out) {
@@ -529,11 +589,12 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
 // In the CPU's best copy (simd.h).
 void Texture::sample8(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
     // The common lookup first, in a copy of its own (sample_uniform).
-    if (!srgb_ && pot_ && s.wrap_s == Wrap::Repeat && s.wrap_t == Wrap::Repeat && s.mag == Filter::Bilinear && s.min == Filter::Bilinear &&
-        s.max_anisotropy <= 1) {
+    if (pot_ && s.wrap_s == Wrap::Repeat && s.wrap_t == Wrap::Repeat && s.mag == Filter::Bilinear && s.min == Filter::Bilinear && s.max_anisotropy <= 1) {
         const PotLevels t{texels(), tables_.width.data(), tables_.height.data(), tables_.tiles_x.data(), tables_.offset.data(),
                           levels(), std::countr_zero(unsigned(width())), std::countr_zero(unsigned(height())), float(width()), float(height())};
-        if (simd::on_best_path([&]<bool Wide>() { return sample_uniform<Wide>(t, u, v, d, s.mip, rgba); })) return;
+        if (srgb_ ? simd::on_best_path([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, s.mip, rgba); })
+                  : simd::on_best_path([&]<bool Wide>() { return sample_uniform<Wide>(t, u, v, d, s.mip, rgba); }))
+            return;
     }
     simd::on_best_path([&]<bool Wide>() {
         if (srgb_) sample_lanes<Wide, true>(u, v, d, s, rgba);

@@ -379,11 +379,11 @@ TEST(Texture, EightLookupsAtOnceEqualOneAtATime) {
     }
 }
 
-// The common case has a path of its own (sample_uniform: a power-of-two texture that
-// repeats, bilinear both ways, every lane on the same levels): it too gives sample()'s bits,
-// on both CPU paths, on square and long textures (whose levels stop halving one side at 1),
-// for footprints from far below a texel to far past the last level, and for coordinates of
-// any size.
+// The common case has a path of its own (sample_uniform, and sample_uniform_srgb for sRGB
+// textures: a power-of-two texture that repeats, bilinear both ways, every lane on the same
+// levels): it too gives sample()'s bits, on both CPU paths, on square and long textures
+// (whose levels stop halving one side at 1), for footprints from far below a texel to far
+// past the last level, and for coordinates of any size.
 TEST(Texture, UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> coord(-40.0f, 40.0f), log_scale(-14.0f, 3.0f), unit(-1.0f, 1.0f), jitter(0.97f, 1.03f);
@@ -397,11 +397,13 @@ TEST(Texture, UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime) {
             for (size_t k = 0; k < 4; ++k) d[k][l] = base[k] * (trial % 2 ? 1.0f : jitter(rng));  // (neighbours: mostly one level)
         }
         expect_eight_equal_one_at_a_time(t, s, u, v, d,
-                                         std::to_string(t.width()) + "x" + std::to_string(t.height()) + " " + path + " mip " + std::to_string(int(s.mip)) +
-                                             " trial " + std::to_string(trial));
+                                         std::to_string(t.width()) + "x" + std::to_string(t.height()) + (t.srgb() ? " srgb " : " ") + path + " mip " +
+                                             std::to_string(int(s.mip)) + " trial " + std::to_string(trial));
     };
-    for (const auto& [w, h] : {std::pair{64, 64}, std::pair{128, 8}, std::pair{2, 256}, std::pair{1, 1}}) {
-        const Texture t = pattern_texture(w, h);
+    for (const auto& [w, h, color] : {std::tuple{64, 64, ColorSpace::Linear}, std::tuple{128, 8, ColorSpace::Linear}, std::tuple{2, 256, ColorSpace::Linear},
+                                      std::tuple{1, 1, ColorSpace::Linear}, std::tuple{64, 64, ColorSpace::Srgb}, std::tuple{128, 8, ColorSpace::Srgb},
+                                      std::tuple{1, 1, ColorSpace::Srgb}}) {
+        const Texture t = pattern_texture(w, h, color);
         for (bool generic : {false, true}) {
             simd::use_generic_path(generic);
             for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear})
