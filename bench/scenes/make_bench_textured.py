@@ -6,6 +6,8 @@
   bench_textured_model_trilinear  the same with trilinear filtering (version 2)
   bench_trilinear                 a corridor of four textured walls to the horizon, the texture
                                   repeated 24 times along it: minified at a grazing angle
+  bench_trilinear_srgb            the same corridor in sRGB (the texture decoded, the picture
+                                  encoded), as a glTF base color texture is read
   bench_pbr                       the textured model with glTF metallic-roughness materials (the
                                   texture also as the metallic-roughness map, a normal map of
                                   bevelled tiles), a directional, a point and a spot light
@@ -127,6 +129,8 @@ quad_obj('corridor_left.obj', ((-W, -1, 2), (-W, -1, 2 - L), (-W, 1, 2 - L), (-W
 quad_obj('corridor_right.obj', ((W, -1, 2 - L), (W, -1, 2), (W, 1, 2), (W, 1, 2 - L)), (24 * 2, 2))
 walls = [{"mesh": "corridor_%s.obj" % side, "material": {"shading": "unlit", "texture": "textures/tiles_1024.png", "filter": "trilinear"}}
          for side in ("floor", "ceiling", "left", "right")]
+corridor_camera = {"eye": [0.2, 0.1, 1.5], "target": [0, 0, -20], "fov_y": 70, "near": 0.1, "far": 100}
 write('bench_trilinear', {"version": 2, "image": {"width": 1920, "height": 1080, "background": [0, 0, 0, 1]},
-                          "camera": {"eye": [0.2, 0.1, 1.5], "target": [0, 0, -20], "fov_y": 70, "near": 0.1, "far": 100},
-                          "objects": walls})
+                          "camera": corridor_camera, "objects": walls})
+write('bench_trilinear_srgb', {"version": 2, "image": {"width": 1920, "height": 1080, "background": [0, 0, 0, 1], "color_space": "srgb"},
+                               "camera": corridor_camera, "objects": walls})
