@@ -80,7 +80,11 @@ inline i8 wrap_texel8(i8 i, i8 n, Wrap w) {
 // vector by value differently.
 template <bool Wide>
 inline void gather(const uint32_t* p, const i8& index, i8& out) {
-    for (int k = 0; k < simd::kLanes; ++k) out[k] = int32_t(p[index[k]]);
+    for (int k = 0; k < simd::kLanes; ++k) {
+        int32_t v;
+        std::memcpy(&v, p + index[k], sizeof v);  // (p may point at floats: the sRGB table)
+        out[k] = v;
+    }
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 template <>
@@ -286,8 +290,9 @@ inline Fixed8 bilinear16(const i8 (&texels)[4], const i8& fx, const i8& fy) {
 
 // ---- the common lookup
 //
-// A power-of-two texture repeating on both axes, bilinear both ways, no anisotropy, in fixed
-// point, every lane on the same level(s): what real models and the corridor mostly ask for.
+// A power-of-two texture repeating on both axes, bilinear both ways, no anisotropy, every lane
+// on the same level(s): what real models and the corridor mostly ask for. Linear textures
+// filter in fixed point (sample_uniform), sRGB ones in float (sample_uniform_srgb).
 // The body of sample_lanes with everything those conditions fix taken out (no level tables,
 // no wrap or filter choices per lane, a level's numbers as scalars), and a small function of
 // its own (the general body's stack frame and dispatch would cost it a sixth of its time):
