@@ -1,0 +1,132 @@
+// The common lookup of Texture::sample8 (texture_lanes.h).
+#include "texture_lanes.h"
+
+namespace softraster::lanes {
+namespace {
+
+// ---- the common lookup
+//
+// A power-of-two texture repeating on both axes, bilinear both ways, no anisotropy, every lane
+// on the same level(s): what real models and the corridor mostly ask for. Linear textures
+// filter in fixed point (sample_uniform_linear), sRGB ones in float (sample_uniform_srgb).
+// The body of sample_lanes with everything those conditions fix taken out (no level tables,
+// no wrap or filter choices per lane, a level's numbers as scalars), and a small function of
+// its own (the general body's stack frame and dispatch would cost it a sixth of its time):
+// the same operations, the same bits (Texture.UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime).
+
+// Level k's lookup from level 0's sample point (fu, fv). (The result by reference: see
+// gather.)
+template <bool Wide>
+inline void pot_level(const PotLevels& t, const i8& fu, const i8& fv, int k, Fixed8& out) {
+    const i8 x = (fu >> std::min(k, t.log2_w)) - 128, y = (fv >> std::min(k, t.log2_h)) - 128;
+    const i8 i0 = (x >> 8) & (t.width[k] - 1), j0 = (y >> 8) & (t.height[k] - 1);
+    i8 texel[4];
+    load_footprints<Wide>(t.texels, tile_index8(t.offset[k], t.tiles_x[k], i0, j0), texel);
+    out = bilinear16<Wide>(texel, x & 255, y & 255);
+}
+#if SOFTRASTER_HAS_AVX2_PATH
+template <>
+[[gnu::target("avx2")]] inline void pot_level<true>(const PotLevels& t, const i8& fu, const i8& fv, int k, Fixed8& out) {
+    const __m256i x = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fu), _mm_cvtsi32_si128(std::min(k, t.log2_w))), _mm256_set1_epi32(128));
+    const __m256i y = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fv), _mm_cvtsi32_si128(std::min(k, t.log2_h))), _mm256_set1_epi32(128));
+    const __m256i i0 = _mm256_and_si256(_mm256_srai_epi32(x, 8), _mm256_set1_epi32(t.width[k] - 1));
+    const __m256i j0 = _mm256_and_si256(_mm256_srai_epi32(y, 8), _mm256_set1_epi32(t.height[k] - 1));
+    // tile_index8, as (((j0 / 4) tiles_x + i0 / 4) 5 + j0 % 4) 5 + i0 % 4 + offset
+    const __m256i tile = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_srai_epi32(j0, 2), _mm256_set1_epi32(t.tiles_x[k])), _mm256_srai_epi32(i0, 2));
+    const __m256i three = _mm256_set1_epi32(3), five = _mm256_set1_epi32(Texture::kTileSide);
+    const __m256i row = _mm256_add_epi32(_mm256_mullo_epi32(tile, five), _mm256_and_si256(j0, three));
+    const __m256i index = _mm256_add_epi32(_mm256_add_epi32(_mm256_mullo_epi32(row, five), _mm256_and_si256(i0, three)), _mm256_set1_epi32(t.offset[k]));
+    i8 texel[4];
+    load_footprints<true>(t.texels, i8(index), texel);
+    const __m256i low = _mm256_set1_epi32(255);
+    out = bilinear16<true>(texel, i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low)));
+}
+#endif
+
+// The level(s) the lanes read, when all read the same: select_lod's, on eight lanes.
+struct UniformLevels {
+    int level;
+    bool two;  // a second level, level + 1, with these weights
+    f8 weight;
+};
+template <bool Wide>
+inline bool uniform_levels(const PotLevels& t, const std::array<f8, 4>& d, MipFilter mip, UniformLevels& out) {
+    using simd::splat, simd::splat_i;
+    LaneLod lod{splat_i(0), splat_i(0), splat(0.0f)};
+    if (mip != MipFilter::None) {
+        f8 rx, ry;
+        footprint_axes8(d, t.w, t.h, rx, ry);
+        const f8 rho2 = simd::select(rx > ry, rx, ry);
+        lod = lane_lod<Wide>(rho2, rho2 > 1.0f, mip, t.levels - 1);
+    }
+    out.level = lod.level0[0];
+    if (simd::any(lod.level0 != out.level)) return false;
+    out.two = simd::any(lod.weight != 0.0f);
+    out.weight = lod.weight;
+    return out.level + (out.two ? 1 : 0) < 16;  // (past the tables otherwise)
+}
+
+// Linear textures: the fixed-point filter (sample_level_fixed).
+template <bool Wide>
+inline bool sample_uniform_linear(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
+    using simd::to_int;
+    UniformLevels l;
+    if (!uniform_levels<Wide>(t, d, mip, l)) return false;
+    // Level 0's sample point in 1/256 texel steps (sample_level_fixed): exact, u being in
+    // [0, 1] and the side a power of two, so that truncation is the floor; level k's is it
+    // shifted right by k, up to a side of 1.
+    const i8 fu = to_int(reduce8<Wide>(u, Wrap::Repeat) * (256.0f * t.w)), fv = to_int(reduce8<Wide>(v, Wrap::Repeat) * (256.0f * t.h));
+    auto at_level = [&](int k) {
+        Fixed8 f;
+        pot_level<Wide>(t, fu, fv, k, f);
+        return f;
+    };
+    Fixed8 f = at_level(l.level);
+    if (l.two) {
+        const Fixed8 f1 = at_level(l.level + 1);
+        Fixed8 w;
+        spread<Wide>(to_int(l.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
+        f = {blend16<Wide>(f.lo, f1.lo, w.lo), blend16<Wide>(f.hi, f1.hi, w.hi)};
+    }
+    unit_of_fixed8<Wide>(f, rgba);
+    return true;
+}
+
+// sRGB textures: each texel decoded through the table (a gather per channel), then the
+// float filter (sample_level), as the general body computes them.
+template <bool Wide>
+inline void srgb_level(const PotLevels& t, const uint32_t* decode, const f8& ur, const f8& vr, int level, std::array<f8, 4>& out) {
+    using simd::to_float;
+    const int w = t.width[level], h = t.height[level];
+    const f8 x = ur * float(w) - 0.5f, y = vr * float(h) - 0.5f;
+    const i8 i0 = floor_small8(x), j0 = floor_small8(y);
+    const f8 fx = x - to_float(i0), fy = y - to_float(j0);
+    i8 texel[4];
+    load_footprints<Wide>(t.texels, tile_index8(t.offset[level], t.tiles_x[level], i0 & (w - 1), j0 & (h - 1)), texel);
+    std::array<f8, 4> c[4];
+    for (size_t p = 0; p < 4; ++p) texel_channels<Wide, true>(texel[p], decode, c[p]);
+    bilinear_float(c, fx, fy, out);
+}
+template <bool Wide>
+inline bool sample_uniform_srgb(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
+    UniformLevels l;
+    if (!uniform_levels<Wide>(t, d, mip, l)) return false;
+    const f8 ur = reduce8<Wide>(u, Wrap::Repeat), vr = reduce8<Wide>(v, Wrap::Repeat);
+    const uint32_t* decode = reinterpret_cast<const uint32_t*>(srgb::tables().decode.data());
+    srgb_level<Wide>(t, decode, ur, vr, l.level, rgba);
+    if (l.two) {
+        std::array<f8, 4> c1;
+        srgb_level<Wide>(t, decode, ur, vr, l.level + 1, c1);
+        blend_levels_float(rgba, c1, l.weight);
+    }
+    return true;
+}
+
+}  // namespace
+
+bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
+    if (srgb) return simd::on_best_path([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, mip, rgba); });
+    return simd::on_best_path([&]<bool Wide>() { return sample_uniform_linear<Wide>(t, u, v, d, mip, rgba); });
+}
+
+}  // namespace softraster::lanes
