@@ -201,9 +201,12 @@ inline LaneLod lane_lod(const f8& rho2, const i8& minified, MipFilter mip, int l
 
 // ---- the fixed-point filter on sixteen-bit lanes (sample_level_fixed)
 //
-// One gather's eight texels make two registers of sixteen 16-bit lanes: texels 0-3 in `lo`,
-// 4-7 in `hi`, each texel's r, g, b, a in four lanes. A blend then works on two texels'
-// channels at once, sixteen at a time, instead of eight float lanes per channel.
+// One gather's eight texels make two registers of sixteen 16-bit lanes, each texel's r, g,
+// b, a in four lanes: texels 0, 1, 4, 5 in `lo`, 2, 3, 6, 7 in `hi`. (That order keeps each
+// texel in its 128-bit half, where AVX2 widens bytes with one single-cycle unpack; texels
+// 0-3 and 4-7 would each take a two-operation widening across the halves.) A blend then
+// works on two texels' channels at once, sixteen at a time, instead of eight float lanes per
+// channel.
 using u16x16 = uint16_t __attribute__((vector_size(32)));
 struct Fixed8 {
     u16x16 lo, hi;
@@ -215,21 +218,21 @@ template <bool Wide>
 inline void widen(const i8& texels, Fixed8& out) {
     using u8x32 = uint8_t __attribute__((vector_size(32)));
     const u8x32 b = std::bit_cast<u8x32>(texels);
-    out = {__builtin_convertvector(__builtin_shufflevector(b, b, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15), u16x16),
-           __builtin_convertvector(__builtin_shufflevector(b, b, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31), u16x16)};
+    out = {__builtin_convertvector(__builtin_shufflevector(b, b, 0, 1, 2, 3, 4, 5, 6, 7, 16, 17, 18, 19, 20, 21, 22, 23), u16x16),
+           __builtin_convertvector(__builtin_shufflevector(b, b, 8, 9, 10, 11, 12, 13, 14, 15, 24, 25, 26, 27, 28, 29, 30, 31), u16x16)};
 }
 // Each lane's weight (0..65535) in its texel's four 16-bit lanes.
 template <bool Wide>
 inline void spread(const i8& weight, Fixed8& out) {
     const u16x16 h = std::bit_cast<u16x16>(weight);  // (lane k's low half is 16-bit lane 2k)
-    out = {__builtin_shufflevector(h, h, 0, 0, 0, 0, 2, 2, 2, 2, 4, 4, 4, 4, 6, 6, 6, 6),
-           __builtin_shufflevector(h, h, 8, 8, 8, 8, 10, 10, 10, 10, 12, 12, 12, 12, 14, 14, 14, 14)};
+    out = {__builtin_shufflevector(h, h, 0, 0, 0, 0, 2, 2, 2, 2, 8, 8, 8, 8, 10, 10, 10, 10),
+           __builtin_shufflevector(h, h, 4, 4, 4, 4, 6, 6, 6, 6, 12, 12, 12, 12, 14, 14, 14, 14)};
 }
 // Channel k of the eight texels as floats in [0, 1] (unit_of_fixed).
 template <bool Wide>
 inline void unit_of_fixed8(const Fixed8& v, std::array<f8, 4>& out) {
     auto channel = [&]<int K>() {
-        const auto lanes = __builtin_shufflevector(v.lo, v.hi, K, K + 4, K + 8, K + 12, K + 16, K + 20, K + 24, K + 28);
+        const auto lanes = __builtin_shufflevector(v.lo, v.hi, K, K + 4, K + 16, K + 20, K + 8, K + 12, K + 24, K + 28);
         out[K] = simd::to_float(__builtin_convertvector(lanes, i8)) * Texture::kFixedToUnit;
     };
     channel.template operator()<0>(), channel.template operator()<1>(), channel.template operator()<2>(), channel.template operator()<3>();
@@ -237,21 +240,22 @@ inline void unit_of_fixed8(const Fixed8& v, std::array<f8, 4>& out) {
 #if SOFTRASTER_HAS_AVX2_PATH
 template <>
 [[gnu::target("avx2")]] inline void widen<true>(const i8& texels, Fixed8& out) {
-    const __m256i t = __m256i(texels);
-    out = {u16x16(_mm256_cvtepu8_epi16(_mm256_castsi256_si128(t))), u16x16(_mm256_cvtepu8_epi16(_mm256_extracti128_si256(t, 1)))};
+    const __m256i t = __m256i(texels), zero = _mm256_setzero_si256();
+    out = {u16x16(_mm256_unpacklo_epi8(t, zero)), u16x16(_mm256_unpackhi_epi8(t, zero))};
 }
 template <>
 [[gnu::target("avx2")]] inline void spread<true>(const i8& weight, Fixed8& out) {
     const __m256i w = __m256i(weight), both = _mm256_or_si256(w, _mm256_slli_epi32(w, 16));  // the weight in both halves
-    out = {u16x16(_mm256_permutevar8x32_epi32(both, _mm256_setr_epi32(0, 0, 1, 1, 2, 2, 3, 3))),
-           u16x16(_mm256_permutevar8x32_epi32(both, _mm256_setr_epi32(4, 4, 5, 5, 6, 6, 7, 7)))};
+    out = {u16x16(_mm256_permutevar8x32_epi32(both, _mm256_setr_epi32(0, 0, 1, 1, 4, 4, 5, 5))),
+           u16x16(_mm256_permutevar8x32_epi32(both, _mm256_setr_epi32(2, 2, 3, 3, 6, 6, 7, 7)))};
 }
 template <>
 [[gnu::target("avx2")]] inline void unit_of_fixed8<true>(const Fixed8& v, std::array<f8, 4>& out) {
-    // As 32-bit lanes, lo is (r, g) and (b, a) of texels 0-3 in turn, hi of texels 4-7.
+    // As 32-bit lanes, each half of lo is (r, g) and (b, a) of two texels in turn (0, 1 and
+    // 4, 5), of hi the next two (2, 3 and 6, 7): picking the even and the odd lanes of both
+    // gives every texel's (r, g) and (b, a) in order.
     const __m256 lo = _mm256_castsi256_ps(__m256i(v.lo)), hi = _mm256_castsi256_ps(__m256i(v.hi));
-    const __m256i rg = _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0x88)), 0xd8);
-    const __m256i ba = _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0xdd)), 0xd8);
+    const __m256i rg = _mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0x88)), ba = _mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0xdd));
     const __m256i low = _mm256_set1_epi32(0xffff);
     const __m256i channel[4] = {_mm256_and_si256(rg, low), _mm256_srli_epi32(rg, 16), _mm256_and_si256(ba, low), _mm256_srli_epi32(ba, 16)};
     for (int k = 0; k < 4; ++k) out[size_t(k)] = f8(_mm256_mul_ps(_mm256_cvtepi32_ps(channel[k]), _mm256_set1_ps(Texture::kFixedToUnit)));
