@@ -66,29 +66,47 @@ inline bool uniform_levels(const PotLevels& t, const std::array<f8, 4>& d, MipFi
     return out.level + (out.two ? 1 : 0) < 16;  // (past the tables otherwise)
 }
 
+// The levels are read before they are known, as a guess: the ones this thread's last lookup
+// read, which the next group of a row nearly always reads too. The level of detail (some 30
+// cycles of float arithmetic, then the level's numbers from the tables) would otherwise head
+// the lookup's longest chain, before the texel addresses and their loads; with the guess
+// the loads start at once, and the level of detail, worked out beside them, only confirms
+// it (a well-predicted branch). A wrong guess reads the right levels again. Either way the
+// values are the same; only the time differs. (The sRGB lookup does without: its gathers,
+// not this chain, bound its time, and the guess made it no faster.)
+struct LevelGuess {
+    int level = 0;
+    bool two = false;
+};
+thread_local LevelGuess t_last_levels;  // (below 16 levels: a texture's tables repeat its last level up to there)
+// Whether the levels read were the right ones; if not, the next guess is l's.
+inline bool guessed_right(LevelGuess g, const UniformLevels& l) {
+    if (g.level == l.level && g.two == l.two) return true;
+    t_last_levels = {l.level, l.two};
+    return false;
+}
+
 // Linear textures: the fixed-point filter (sample_level_fixed).
 template <bool Wide>
 inline bool sample_uniform_linear(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
     using simd::to_int;
-    UniformLevels l;
-    if (!uniform_levels<Wide>(t, d, mip, l)) return false;
     // Level 0's sample point in 1/256 texel steps (sample_level_fixed): exact, u being in
     // [0, 1] and the side a power of two, so that truncation is the floor; level k's is it
     // shifted right by k, up to a side of 1.
     const i8 fu = to_int(reduce8<Wide>(u, Wrap::Repeat) * (256.0f * t.w)), fv = to_int(reduce8<Wide>(v, Wrap::Repeat) * (256.0f * t.h));
-    auto at_level = [&](int k) {
-        Fixed8 f;
-        pot_level<Wide>(t, fu, fv, k, f);
-        return f;
-    };
-    Fixed8 f = at_level(l.level);
+    const LevelGuess g = t_last_levels;
+    Fixed8 f0, f1{};
+    pot_level<Wide>(t, fu, fv, g.level, f0);
+    if (g.two) pot_level<Wide>(t, fu, fv, g.level + 1, f1);
+    UniformLevels l;
+    if (!uniform_levels<Wide>(t, d, mip, l)) return false;
+    if (!guessed_right(g, l)) [[unlikely]] return sample_uniform_linear<Wide>(t, u, v, d, mip, rgba);  // (now guessing right)
     if (l.two) {
-        const Fixed8 f1 = at_level(l.level + 1);
         Fixed8 w;
         spread<Wide>(to_int(l.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
-        f = {blend16<Wide>(f.lo, f1.lo, w.lo), blend16<Wide>(f.hi, f1.hi, w.hi)};
+        f0 = {blend16<Wide>(f0.lo, f1.lo, w.lo), blend16<Wide>(f0.hi, f1.hi, w.hi)};
     }
-    unit_of_fixed8<Wide>(f, rgba);
+    unit_of_fixed8<Wide>(f0, rgba);
     return true;
 }
 

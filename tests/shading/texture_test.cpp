@@ -415,6 +415,29 @@ TEST(Texture, UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime) {
     }
 }
 
+// The common lookup reads the levels the thread's last lookup read before it knows its own
+// (texture_uniform.cpp): after a large texture's coarse levels, a small texture that has no
+// such levels, and a lookup of one level after one of two, still read what they should.
+TEST(Texture, UniformLookupsAfterOtherLevelsEqualOneAtATime) {
+    const Texture large = pattern_texture(1024, 1024), small = pattern_texture(4, 4);
+    const Sampler s{Filter::Bilinear, Filter::Bilinear, MipFilter::Linear, Wrap::Repeat, Wrap::Repeat, glm::vec4(0.0f), 1};
+    auto lookups = [&](const Texture& t, float texels_per_pixel, const std::string& what) {
+        simd::f8 u, v;
+        for (int l = 0; l < simd::kLanes; ++l) u[l] = 0.3f + 0.01f * float(l), v[l] = 0.7f - 0.003f * float(l);
+        const float d = texels_per_pixel / float(t.width());
+        expect_eight_equal_one_at_a_time(t, s, u, v, {simd::splat(d), simd::splat(0.0f), simd::splat(0.0f), simd::splat(d)}, what);
+    };
+    for (bool generic : {false, true}) {
+        simd::use_generic_path(generic);
+        lookups(large, 300.0f, "large, levels 8 and 9");
+        lookups(small, 0.5f, "small, magnified");
+        lookups(large, 2.0f, "large, level 1 alone");
+        lookups(large, 2.5f, "large, levels 1 and 2");
+        lookups(large, 2.0f, "large, level 1 alone again");
+    }
+    simd::use_generic_path(false);
+}
+
 // Textures of the size of real assets' (a megapixel, one side not a power of two): every
 // texel is where the image has it, and lookups at texel centers, eight at once, return it.
 TEST(Texture, LargeTexturesKeepEveryTexel) {
