@@ -94,13 +94,15 @@ inline bool sample_uniform_linear(const PotLevels& t, const f8& u, const f8& v, 
     // [0, 1] and the side a power of two, so that truncation is the floor; level k's is it
     // shifted right by k, up to a side of 1.
     const i8 fu = to_int(reduce8<Wide>(u, Wrap::Repeat) * (256.0f * t.w)), fv = to_int(reduce8<Wide>(v, Wrap::Repeat) * (256.0f * t.h));
-    const LevelGuess g = t_last_levels;
     Fixed8 f0, f1{};
-    pot_level<Wide>(t, fu, fv, g.level, f0);
-    if (g.two) pot_level<Wide>(t, fu, fv, g.level + 1, f1);
     UniformLevels l;
-    if (!uniform_levels<Wide>(t, d, mip, l)) return false;
-    if (!guessed_right(g, l)) [[unlikely]] return sample_uniform_linear<Wide>(t, u, v, d, mip, rgba);  // (now guessing right)
+    for (;;) {  // (twice only after a wrong guess, which guessed_right corrects)
+        const LevelGuess g = t_last_levels;
+        pot_level<Wide>(t, fu, fv, g.level, f0);
+        if (g.two) pot_level<Wide>(t, fu, fv, g.level + 1, f1);
+        if (!uniform_levels<Wide>(t, d, mip, l)) return false;
+        if (guessed_right(g, l)) [[likely]] break;
+    }
     if (l.two) {
         Fixed8 w;
         spread<Wide>(to_int(l.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
