@@ -182,18 +182,33 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
     else with_filter.template operator()<false>();
 }
 
+// The common lookup's conditions: a power-of-two texture repeating on both axes, bilinear
+// both ways, no anisotropy; then its numbers.
+static bool uniform_lookup(bool pot, const Sampler& s) {
+    return pot && s.wrap_s == Wrap::Repeat && s.wrap_t == Wrap::Repeat && s.mag == Filter::Bilinear && s.min == Filter::Bilinear && s.max_anisotropy <= 1;
+}
+
 // In the CPU's best copy (simd.h).
 void Texture::sample8(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
     // The common lookup first, in a copy of its own (texture_uniform.cpp).
-    if (pot_ && s.wrap_s == Wrap::Repeat && s.wrap_t == Wrap::Repeat && s.mag == Filter::Bilinear && s.min == Filter::Bilinear && s.max_anisotropy <= 1) {
-        const lanes::PotLevels t{texels(), tables_.width.data(), tables_.height.data(), tables_.tiles_x.data(), tables_.offset.data(),
-                          levels(), std::countr_zero(unsigned(width())), std::countr_zero(unsigned(height())), float(width()), float(height())};
-        if (lanes::sample_uniform(t, srgb_, u, v, d, s.mip, rgba)) return;
-    }
+    if (uniform_lookup(pot_, s) && lanes::sample_uniform(pot_levels(), srgb_, u, v, d, s.mip, rgba)) return;
     simd::on_best_path([&]<bool Wide>() {
         if (srgb_) sample_lanes<Wide, true>(u, v, d, s, rgba);
         else sample_lanes<Wide, false>(u, v, d, s, rgba);
     });
+}
+
+void Texture::sample_quad_rows(const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0, const std::array<f8, 4>& d1,
+                               const Sampler& s, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) const {
+    // Together where both groups take the common lookup on the same levels, in fixed point.
+    if (uniform_lookup(pot_, s) && !srgb_ && lanes::sample_uniform_rows(pot_levels(), u0, v0, u1, v1, d0, d1, s.mip, rgba0, rgba1)) return;
+    sample8(u0, v0, d0, s, rgba0);
+    sample8(u1, v1, d1, s, rgba1);
+}
+
+lanes::PotLevels Texture::pot_levels() const {
+    return {texels(), tables_.width.data(), tables_.height.data(), tables_.tiles_x.data(), tables_.offset.data(),
+            levels(), std::countr_zero(unsigned(width())), std::countr_zero(unsigned(height())), float(width()), float(height())};
 }
 
 }  // namespace softraster

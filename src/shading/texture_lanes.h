@@ -305,6 +305,10 @@ struct PotLevels {
 };
 // The lookup in the CPU's best copy, sRGB textures filtered in float, others in fixed
 // point; false (rgba untouched) if the lanes' levels differ.
+// Two groups' lookups (Texture::sample_quad_rows), linear textures only: false (rgba
+// untouched) unless all sixteen lanes take the same level(s) from the same derivatives.
+bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
+                         const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1);
 bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba);
 
 }  // namespace softraster::lanes

@@ -14,19 +14,20 @@ namespace {
 // its own (the general body's stack frame and dispatch would cost it a sixth of its time):
 // the same operations, the same bits (Texture.UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime).
 
-// Level k's lookup from level 0's sample point (fu, fv). (The result by reference: see
-// gather.)
+// Level k's sample point, from level 0's (fu, fv): the index of its footprint's first texel
+// and the weights (0..255) across and up.
+struct LevelPoint {
+    i8 index, fx, fy;
+};
 template <bool Wide>
-inline void pot_level(const PotLevels& t, const i8& fu, const i8& fv, int k, Fixed8& out) {
+inline void level_point(const PotLevels& t, const i8& fu, const i8& fv, int k, LevelPoint& out) {
     const i8 x = (fu >> std::min(k, t.log2_w)) - 128, y = (fv >> std::min(k, t.log2_h)) - 128;
     const i8 i0 = (x >> 8) & (t.width[k] - 1), j0 = (y >> 8) & (t.height[k] - 1);
-    i8 texel[4];
-    load_footprints<Wide>(t.texels, tile_index8(t.offset[k], t.tiles_x[k], i0, j0), texel);
-    out = bilinear16<Wide>(texel, x & 255, y & 255);
+    out = {tile_index8(t.offset[k], t.tiles_x[k], i0, j0), x & 255, y & 255};
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 template <>
-[[gnu::target("avx2")]] inline void pot_level<true>(const PotLevels& t, const i8& fu, const i8& fv, int k, Fixed8& out) {
+[[gnu::target("avx2")]] inline void level_point<true>(const PotLevels& t, const i8& fu, const i8& fv, int k, LevelPoint& out) {
     const __m256i x = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fu), _mm_cvtsi32_si128(std::min(k, t.log2_w))), _mm256_set1_epi32(128));
     const __m256i y = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fv), _mm_cvtsi32_si128(std::min(k, t.log2_h))), _mm256_set1_epi32(128));
     const __m256i i0 = _mm256_and_si256(_mm256_srai_epi32(x, 8), _mm256_set1_epi32(t.width[k] - 1));
@@ -36,12 +37,20 @@ template <>
     const __m256i three = _mm256_set1_epi32(3), five = _mm256_set1_epi32(Texture::kTileSide);
     const __m256i row = _mm256_add_epi32(_mm256_mullo_epi32(tile, five), _mm256_and_si256(j0, three));
     const __m256i index = _mm256_add_epi32(_mm256_add_epi32(_mm256_mullo_epi32(row, five), _mm256_and_si256(i0, three)), _mm256_set1_epi32(t.offset[k]));
-    i8 texel[4];
-    load_footprints<true>(t.texels, i8(index), texel);
     const __m256i low = _mm256_set1_epi32(255);
-    out = bilinear16<true>(texel, i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low)));
+    out = {i8(index), i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low))};
 }
 #endif
+// Level k's lookup: its sample point, the footprints' texels, the filter. (The result by
+// reference: see gather.)
+template <bool Wide>
+inline void pot_level(const PotLevels& t, const i8& fu, const i8& fv, int k, Fixed8& out) {
+    LevelPoint p;
+    level_point<Wide>(t, fu, fv, k, p);
+    i8 texel[4];
+    load_footprints<Wide>(t.texels, p.index, texel);
+    out = bilinear16<Wide>(texel, p.fx, p.fy);
+}
 
 // The level(s) the lanes read, when all read the same: select_lod's, on eight lanes.
 struct UniformLevels {
@@ -86,14 +95,19 @@ inline bool guessed_right(LevelGuess g, const UniformLevels& l) {
     return false;
 }
 
+// Level 0's sample point in 1/256 texel steps (sample_level_fixed): exact, u being in [0, 1]
+// and the side a power of two, so that truncation is the floor; level k's is it shifted right
+// by k, up to a side of 1.
+template <bool Wide>
+inline i8 fixed_point(const f8& u, float side) {
+    return simd::to_int(reduce8<Wide>(u, Wrap::Repeat) * (256.0f * side));
+}
+
 // Linear textures: the fixed-point filter (sample_level_fixed).
 template <bool Wide>
 inline bool sample_uniform_linear(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
     using simd::to_int;
-    // Level 0's sample point in 1/256 texel steps (sample_level_fixed): exact, u being in
-    // [0, 1] and the side a power of two, so that truncation is the floor; level k's is it
-    // shifted right by k, up to a side of 1.
-    const i8 fu = to_int(reduce8<Wide>(u, Wrap::Repeat) * (256.0f * t.w)), fv = to_int(reduce8<Wide>(v, Wrap::Repeat) * (256.0f * t.h));
+    const i8 fu = fixed_point<Wide>(u, t.w), fv = fixed_point<Wide>(v, t.h);
     Fixed8 f0, f1{};
     UniformLevels l;
     for (;;) {  // (twice only after a wrong guess, which guessed_right corrects)
@@ -109,6 +123,43 @@ inline bool sample_uniform_linear(const PotLevels& t, const f8& u, const f8& v, 
         f0 = {blend16<Wide>(f0.lo, f1.lo, w.lo), blend16<Wide>(f0.hi, f1.hi, w.hi)};
     }
     unit_of_fixed8<Wide>(f0, rgba);
+    return true;
+}
+
+// Two groups: a row of quads' first and second rows (Texture::sample_quad_rows). The
+// quads' derivatives are both groups', so one level of detail serves both; and the work goes
+// phase by phase, both groups' texel addresses, then all their loads, then all the
+// filtering, so that the second group's loads do not queue behind the first's filter (a
+// lookup is a long chain of dependent steps; side by side, two overlap).
+template <bool Wide>
+inline bool sample_uniform_linear_rows(const PotLevels& t, const f8 (&u)[2], const f8 (&v)[2], const std::array<f8, 4>& d, MipFilter mip,
+                                       std::array<f8, 4>* const (&rgba)[2]) {
+    using simd::to_int;
+    i8 fu[2], fv[2];
+    for (int g = 0; g < 2; ++g) fu[g] = fixed_point<Wide>(u[g], t.w), fv[g] = fixed_point<Wide>(v[g], t.h);
+    LevelPoint p[2][2];  // [group][first or second level]
+    i8 texel[2][2][4];
+    UniformLevels l;
+    for (;;) {  // (twice only after a wrong guess, which guessed_right corrects)
+        const LevelGuess guess = t_last_levels;
+        const int levels = guess.two ? 2 : 1;
+        for (int g = 0; g < 2; ++g)
+            for (int k = 0; k < levels; ++k) level_point<Wide>(t, fu[g], fv[g], guess.level + k, p[g][k]);
+        for (int g = 0; g < 2; ++g)
+            for (int k = 0; k < levels; ++k) load_footprints<Wide>(t.texels, p[g][k].index, texel[g][k]);
+        if (!uniform_levels<Wide>(t, d, mip, l)) return false;
+        if (guessed_right(guess, l)) [[likely]] break;
+    }
+    Fixed8 w;
+    if (l.two) spread<Wide>(to_int(l.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
+    for (int g = 0; g < 2; ++g) {
+        Fixed8 f = bilinear16<Wide>(texel[g][0], p[g][0].fx, p[g][0].fy);
+        if (l.two) {
+            const Fixed8 f1 = bilinear16<Wide>(texel[g][1], p[g][1].fx, p[g][1].fy);
+            f = {blend16<Wide>(f.lo, f1.lo, w.lo), blend16<Wide>(f.hi, f1.hi, w.hi)};
+        }
+        unit_of_fixed8<Wide>(f, *rgba[g]);
+    }
     return true;
 }
 
@@ -143,6 +194,19 @@ inline bool sample_uniform_srgb(const PotLevels& t, const f8& u, const f8& v, co
 }
 
 }  // namespace
+
+bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
+                         const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) {
+    // (All of it in the lambda, the CPU path's own copy: vectors compared or copied outside it
+    // would be compiled without AVX, lane by lane.)
+    return simd::on_best_path([&]<bool Wide>() {
+        for (size_t k = 0; k < 4; ++k)
+            if (simd::any(d0[k] != d1[k])) return false;  // (not the same quads': each its own level of detail)
+        const f8 u[2] = {u0, u1}, v[2] = {v0, v1};
+        std::array<f8, 4>* const rgba[2] = {&rgba0, &rgba1};
+        return sample_uniform_linear_rows<Wide>(t, u, v, d0, mip, rgba);
+    });
+}
 
 bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
     if (srgb) return simd::on_best_path([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, mip, rgba); });

@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "softraster/pipeline/fragment_shading.h"
 #include "softraster/shading/surface_shader.h"
 
 using namespace softraster;
@@ -228,6 +229,21 @@ void expect_batch_equals_scalar(const SurfaceUniforms& u) {
         }
         std::array<simd::f8, 4> batch;
         shader.fragment_batch(in, z, true, batch);
+        if constexpr (QuadRowShader<S>) {  // two rows of quads at once: each as fragment_batch gives it
+            std::array<simd::f8, N> below;
+            for (int l = 0; l < simd::kLanes; ++l)
+                for (auto& v : below) v[l] = val(rng);
+            for (size_t k = 0; k < 4; ++k)  // (the quads' derivatives, but now and then not)
+                below[size_t(S::Varyings::kUvDerivativesAt) + k] = in[size_t(S::Varyings::kUvDerivativesAt) + k] * (trial % 7 == 0 ? 0.5f : 1.0f);
+            std::array<simd::f8, 4> rows[2], alone;
+            shader.fragment_quad_rows(in, below, z, z + 0.1f, true, rows[0], rows[1]);
+            shader.fragment_batch(below, z + 0.1f, true, alone);
+            for (int l = 0; l < simd::kLanes; ++l)
+                for (size_t ch = 0; ch < 4; ++ch) {
+                    ASSERT_EQ(std::bit_cast<uint32_t>(rows[0][ch][l]), std::bit_cast<uint32_t>(batch[ch][l])) << "model " << int(M) << " first row";
+                    ASSERT_EQ(std::bit_cast<uint32_t>(rows[1][ch][l]), std::bit_cast<uint32_t>(alone[ch][l])) << "model " << int(M) << " second row";
+                }
+        }
         for (int l = 0; l < simd::kLanes; ++l) {
             std::array<float, size_t(N)> lane;
             for (size_t k = 0; k < size_t(N); ++k) lane[k] = in[k][l];

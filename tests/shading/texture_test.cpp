@@ -438,6 +438,46 @@ TEST(Texture, UniformLookupsAfterOtherLevelsEqualOneAtATime) {
     simd::use_generic_path(false);
 }
 
+// Two groups at once (sample_quad_rows: a row of quads' two rows) give what each gives alone
+// (sample8): sharing the level of detail where their derivatives are the same (the quads'),
+// each its own where they differ; linear and sRGB, power-of-two sides or not, any sampler.
+TEST(Texture, QuadRowLookupsEqualEightAtATime) {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> coord(-40.0f, 40.0f), log_scale(-14.0f, 3.0f), unit(-1.0f, 1.0f), near(-0.02f, 0.02f);
+    for (const auto& [w, h, color] : {std::tuple{64, 64, ColorSpace::Linear}, std::tuple{128, 8, ColorSpace::Linear}, std::tuple{1, 1, ColorSpace::Linear},
+                                      std::tuple{48, 32, ColorSpace::Linear}, std::tuple{64, 64, ColorSpace::Srgb}}) {
+        const Texture t = pattern_texture(w, h, color);
+        for (bool generic : {false, true}) {
+            simd::use_generic_path(generic);
+            for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear})
+                for (Wrap wrap : {Wrap::Repeat, Wrap::Clamp})
+                    for (int trial = 0; trial < 150; ++trial) {
+                        Sampler s = Sampler::plain(Filter::Bilinear, wrap);
+                        s.mip = mip;
+                        simd::f8 u0, v0, u1, v1;
+                        std::array<simd::f8, 4> d0, d1;
+                        const float scale = std::exp2(log_scale(rng));
+                        for (int l = 0; l < simd::kLanes; ++l) {
+                            u0[l] = coord(rng), v0[l] = coord(rng), u1[l] = u0[l] + near(rng), v1[l] = v0[l] + near(rng);
+                            for (size_t k = 0; k < 4; ++k) d0[k][l] = scale * (trial % 3 ? 1.0f : unit(rng));
+                        }
+                        d1 = d0;
+                        if (trial % 5 == 0) d1[1] = d1[1] * 1.5f;  // (not the same quads)
+                        std::array<simd::f8, 4> got0, got1, want0, want1;
+                        t.sample_quad_rows(u0, v0, u1, v1, d0, d1, s, got0, got1);
+                        t.sample8(u0, v0, d0, s, want0);
+                        t.sample8(u1, v1, d1, s, want1);
+                        for (int l = 0; l < simd::kLanes; ++l)
+                            for (size_t k = 0; k < 4; ++k) {
+                                ASSERT_EQ(std::bit_cast<uint32_t>(got0[k][l]), std::bit_cast<uint32_t>(want0[k][l])) << w << "x" << h << " trial " << trial << " lane " << l;
+                                ASSERT_EQ(std::bit_cast<uint32_t>(got1[k][l]), std::bit_cast<uint32_t>(want1[k][l])) << w << "x" << h << " trial " << trial << " lane " << l;
+                            }
+                    }
+        }
+        simd::use_generic_path(false);
+    }
+}
+
 // Textures of the size of real assets' (a megapixel, one side not a power of two): every
 // texel is where the image has it, and lookups at texel centers, eight at once, return it.
 TEST(Texture, LargeTexturesKeepEveryTexel) {

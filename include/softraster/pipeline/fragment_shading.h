@@ -23,6 +23,16 @@ concept BatchShader = Shader<S> && requires(const S s, const std::array<simd::f8
     s.fragment_batch(v, z, true, color);
 };
 
+// A shader may also offer fragment_quad_rows(v0, v1, z0, z1, front_facing, color0, color1):
+// fragment_batch for the two rows of a row of 2x2 quads (eight pixels of a quads' first row
+// and the eight below them) at once, where doing both together is cheaper (a texture's
+// lookups: one level of detail for both). The back end then shades such pairs with one call.
+template <class S>
+concept QuadRowShader = BatchShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v,
+                                                   simd::f8 z, std::array<simd::f8, 4>& color) {
+    s.fragment_quad_rows(v, v, z, z, true, color, color);
+};
+
 // A shader that never discards and has no side effects says so with
 // `static constexpr bool kPure = true;`: its fragments' depth can be written before they
 // are shaded, and they can be shaded in any order (fragment_queue.h,
@@ -45,6 +55,13 @@ template <BatchShader S>
                                                   const simd::f8& z, bool front_facing, std::array<simd::f8, 4>& rgba) {
     simd::on_best_path([&]<bool>() { shader.fragment_batch(varyings, z, front_facing, rgba); });
 }
+template <QuadRowShader S>
+[[gnu::noinline]] void fragment_quad_rows_out_of_line(const S& shader, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v0,
+                                                      const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v1, const simd::f8& z0,
+                                                      const simd::f8& z1, bool front_facing, std::array<simd::f8, 4>& rgba0,
+                                                      std::array<simd::f8, 4>& rgba1) {
+    simd::on_best_path([&]<bool>() { shader.fragment_quad_rows(v0, v1, z0, z1, front_facing, rgba0, rgba1); });
+}
 template <Shader S>
 [[gnu::noinline]] bool fragment_out_of_line(const S& shader, const typename S::Varyings& v, const FragCoord& frag, glm::vec4& color) {
     return simd::on_best_path([&]<bool>() { return shader.fragment(v, frag, color); });
@@ -56,6 +73,13 @@ inline void run_fragment_batch(const S& shader, const std::array<simd::f8, kVary
                                const simd::f8& z, bool front_facing, std::array<simd::f8, 4>& rgba) {
     if constexpr (OutOfLineShader<S>) fragment_batch_out_of_line(shader, varyings, z, front_facing, rgba);
     else shader.fragment_batch(varyings, z, front_facing, rgba);
+}
+template <QuadRowShader S>
+inline void run_fragment_quad_rows(const S& shader, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v0,
+                                   const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v1, const simd::f8& z0, const simd::f8& z1,
+                                   bool front_facing, std::array<simd::f8, 4>& rgba0, std::array<simd::f8, 4>& rgba1) {
+    if constexpr (OutOfLineShader<S>) fragment_quad_rows_out_of_line(shader, v0, v1, z0, z1, front_facing, rgba0, rgba1);
+    else shader.fragment_quad_rows(v0, v1, z0, z1, front_facing, rgba0, rgba1);
 }
 template <Shader S>
 inline bool run_fragment(const S& shader, const typename S::Varyings& v, const FragCoord& frag, glm::vec4& color) {

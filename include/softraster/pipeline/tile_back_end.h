@@ -193,7 +193,7 @@ struct TileBackEnd {
             }
             run_fragment_batch(shader, interpolate_varyings<S, kConstant>(t, i, j), z, t.front_facing, rgba);
         };
-        rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
+        auto row = [&](int y, int x_begin, int x_end) {
             const f8 j = splat(float(y - t.origin_y));
             float* depth_row = fb.depth_data() + fb.sample_index(0, y);
             Rgba8* color_row = fb.color_data() + fb.sample_index(0, y);
@@ -227,6 +227,61 @@ struct TileBackEnd {
             if constexpr (Blended) {
                 if (pending.count > 0) blend_row(blend, color_row, width, pending);
             }
+        };
+        if constexpr (QuadRowShader<S> && !kStencil) {
+            // A shader that shades two rows of quads at once (QuadRowShader) gets the groups
+            // of a quads' first row (y even) and of the row below together, the first row's
+            // span held until the second's comes. Each pixel's depth test, color and merge
+            // are its own, so the order between the two rows changes nothing.
+            const bool pairs = !(Blended && blend.mode == BlendMode::Custom) && !shaded_once && blend.color_mask;
+            if (pairs) {
+                int held_y = -1, held_begin = 0, held_end = 0;  // a first row's span, waiting
+                rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
+                    if (held_y >= 0 && held_y == y - 1) {
+                        shaded += draw_quad_rows(t, held_y, held_begin, held_end, x_begin, x_end);
+                        held_y = -1;
+                        return;
+                    }
+                    if (held_y >= 0) row(held_y, held_begin, held_end), held_y = -1;
+                    if ((y & 1) == 0) held_y = y, held_begin = x_begin, held_end = x_end;
+                    else row(y, x_begin, x_end);
+                });
+                if (held_y >= 0) row(held_y, held_begin, held_end);
+                return shaded;
+            }
+        }
+        rasterize_spans(t, t.bounds, row);
+        return shaded;
+    }
+
+    // The groups of rows y (a quads' first) and y + 1, spans [begin0, end0) and [begin1,
+    // end1): where both rows of a group have pixels that pass the depth test, shaded with one
+    // call (QuadRowShader); else each row's on its own.
+    uint64_t draw_quad_rows(const TriangleSetup<N>& t, int y, int begin0, int end0, int begin1, int end1) const requires(QuadRowShader<S>) {
+        using namespace simd;
+        uint64_t shaded = 0;
+        const int width = fb.width();
+        const f8 j0 = splat(float(y - t.origin_y)), j1 = splat(float(y + 1 - t.origin_y));
+        float* depth_rows[2] = {fb.depth_data() + fb.sample_index(0, y), fb.depth_data() + fb.sample_index(0, y + 1)};
+        Rgba8* color_rows[2] = {fb.color_data() + fb.sample_index(0, y), fb.color_data() + fb.sample_index(0, y + 1)};
+        for_each_group(std::min(begin0, begin1), std::max(end0, end1), [&](int x, i8) {
+            const i8 px = kLaneIndex + x;
+            const i8 covered[2] = {(px >= begin0) & (px < end0), (px >= begin1) & (px < end1)};
+            const f8 i = to_float(kLaneIndex) + float(x - t.origin_x);
+            const f8 z[2] = {interpolate_depth(t, i, j0), interpolate_depth(t, i, j1)};
+            i8 pass[2];
+            for (int r = 0; r < 2; ++r) pass[r] = any(covered[r]) ? depth.test_group(depth_rows[r], x, width, z[r], covered[r]) : splat_i(0);
+            shaded += unsigned(__builtin_popcount(bits(pass[0]))) + unsigned(__builtin_popcount(bits(pass[1])));
+            std::array<f8, 4> rgba[2];
+            if (any(pass[0]) && any(pass[1])) {
+                run_fragment_quad_rows(shader, interpolate_varyings<S, kConstant>(t, i, j0), interpolate_varyings<S, kConstant>(t, i, j1), z[0], z[1],
+                                       t.front_facing, rgba[0], rgba[1]);
+            } else {
+                for (int r = 0; r < 2; ++r)
+                    if (any(pass[r])) run_fragment_batch(shader, interpolate_varyings<S, kConstant>(t, i, r ? j1 : j0), z[r], t.front_facing, rgba[r]);
+            }
+            for (int r = 0; r < 2; ++r)
+                if (any(pass[r])) blend_group<Blended>(blend, color_rows[r], x, width, pass[r], rgba[r]);
         });
         return shaded;
     }

@@ -254,9 +254,39 @@ struct SurfaceShader {
         return {rgb.x + emissive.x, rgb.y + emissive.y, rgb.z + emissive.z};
     }
 
-    // The same formulas for eight fragments of a row (fragment_shading.h).
+    // The same formulas for eight fragments of a row (fragment_shading.h) ...
     void fragment_batch(const std::array<simd::f8, kVaryingCount<Varyings>>& in, simd::f8 z, bool,
                         std::array<simd::f8, 4>& out) const {
+        if constexpr (Varyings::kUv) {
+            std::array<simd::f8, 4> tex;
+            const bool textured = Model != Shading::Pbr || u->texture;
+            if (textured) u->texture->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], uv_derivatives(in), u->sampler, tex);
+            shade_batch(in, z, textured ? &tex : nullptr, out);
+        } else {
+            shade_batch(in, z, nullptr, out);
+        }
+    }
+    // ... and for the two rows of a row of 2x2 quads (fragment_shading.h), whose texture
+    // lookups go together (Texture::sample_quad_rows).
+    using Batch = std::array<simd::f8, kVaryingCount<Varyings>>;
+    void fragment_quad_rows(const Batch& in0, const Batch& in1, simd::f8 z0, simd::f8 z1, bool, std::array<simd::f8, 4>& out0,
+                            std::array<simd::f8, 4>& out1) const requires(Varyings::kUv) {
+        std::array<simd::f8, 4> tex0, tex1;
+        const bool textured = Model != Shading::Pbr || u->texture;
+        if (textured)
+            u->texture->sample_quad_rows(in0[Varyings::kUvAt], in0[Varyings::kUvAt + 1], in1[Varyings::kUvAt], in1[Varyings::kUvAt + 1],
+                                         uv_derivatives(in0), uv_derivatives(in1), u->sampler, tex0, tex1);
+        shade_batch(in0, z0, textured ? &tex0 : nullptr, out0);
+        shade_batch(in1, z1, textured ? &tex1 : nullptr, out1);
+    }
+
+private:
+    static std::array<simd::f8, 4> uv_derivatives(const Batch& in) {
+        constexpr size_t d = Varyings::kUvDerivativesAt;
+        return {in[d], in[d + 1], in[d + 2], in[d + 3]};
+    }
+    // The formulas with the base color texture's value `tex` looked up (null: none).
+    void shade_batch(const Batch& in, simd::f8 z, const std::array<simd::f8, 4>* tex, std::array<simd::f8, 4>& out) const {
         using namespace simd;
         static_assert(kVaryingCount<Varyings> == Varyings::kFloats, "varying layout");
         auto vec3_at = [&](int k) { return vec3x8{in[size_t(k)], in[size_t(k) + 1], in[size_t(k) + 2]}; };
@@ -269,14 +299,9 @@ struct SurfaceShader {
             std::array<f8, 4> base = {splat(u->color.r), splat(u->color.g), splat(u->color.b), splat(u->color.a)};
             if constexpr (Varyings::kColor)
                 for (size_t c = 0; c < 4; ++c) base[c] *= in[size_t(Varyings::kColorAt) + c];
-            if constexpr (Varyings::kUv) {
-                std::array<f8, 4> tex;
-                constexpr size_t d = Varyings::kUvDerivativesAt;
-                if (Model != Shading::Pbr || u->texture) {
-                    u->texture->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], {in[d], in[d + 1], in[d + 2], in[d + 3]}, u->sampler, tex);
-                    for (size_t c = 0; c < 4; ++c) base[c] *= tex[c];
-                }
-            }
+            if constexpr (Varyings::kUv)
+                if (tex)
+                    for (size_t c = 0; c < 4; ++c) base[c] *= (*tex)[c];
             if constexpr (Model == Shading::Unlit) {
                 out = base;
             } else if constexpr (Model == Shading::Pbr) {

@@ -39,6 +39,10 @@
 
 namespace softraster {
 
+namespace lanes {
+struct PotLevels;  // (the eight-lane lookup's view of the levels: src/shading/texture_lanes.h)
+}
+
 enum class Filter { Nearest, Bilinear };          // within a level: GL_NEAREST, GL_LINEAR
 enum class MipFilter { None, Nearest, Linear };  // between levels: ..._MIPMAP_NEAREST, ..._MIPMAP_LINEAR
 enum class Wrap { Repeat, Clamp, Mirror, Border };
@@ -116,6 +120,12 @@ public:
     // into, and one compiled copy (a call per eight texels) keeps the build small.
     void sample8(const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d, const Sampler& s,
                  std::array<simd::f8, 4>& rgba) const;
+    // The lookups of two groups of eight: a row of 2x2 quads' first and second rows, (u0, v0)
+    // and (u1, v1), their derivatives d0 and d1 (the quads', so the same for both). Each as
+    // sample8 computes it; faster together, as one level of detail serves both and the
+    // second group's loads need not wait behind the first's filter.
+    void sample_quad_rows(const simd::f8& u0, const simd::f8& v0, const simd::f8& u1, const simd::f8& v1, const std::array<simd::f8, 4>& d0,
+                          const std::array<simd::f8, 4>& d1, const Sampler& s, std::array<simd::f8, 4>& rgba0, std::array<simd::f8, 4>& rgba1) const;
 
     LevelChoice select_lod(const UvDerivatives& d, const Sampler& s) const;
 
@@ -155,6 +165,7 @@ private:
     template <bool Wide, bool Srgb>
     void sample_lanes(const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d, const Sampler& s,
                       std::array<simd::f8, 4>& rgba) const;
+    lanes::PotLevels pot_levels() const;  // (for the common lookup)
 };
 
 namespace detail {
