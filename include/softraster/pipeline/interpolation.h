@@ -89,6 +89,30 @@ inline std::array<simd::f8, N> interpolate_quad_rows(const TriangleSetup<N>& t, 
     return out;
 }
 
+// Both rows of a row of quads, j0 the first's offset (quad_row_lanes holds for it): each
+// row as interpolate_quad_rows gives it, from the same numbers, but each row's 1/w and the
+// derivatives computed once for the two.
+template <class S, int N>
+inline void interpolate_quad_row_pair(const TriangleSetup<N>& t, const simd::f8& i, const simd::f8& j0, std::array<simd::f8, size_t(N)>& first,
+                                      std::array<simd::f8, size_t(N)>& second) {
+    using simd::f8;
+    constexpr uint64_t Flat = kFlatVaryings<S>;
+    constexpr size_t a = size_t(S::kDerivativeOf), at = size_t(S::kDerivativeAt);
+    const f8 j1 = j0 + 1.0f;
+    const f8 w0 = 1.0f / t.inv_w.at(i, j0), w1 = 1.0f / t.inv_w.at(i, j1);
+    for (size_t k = 0; k < size_t(N); ++k) {
+        if ((Flat >> k) & 1) first[k] = t.var_w[k].at(i, j0), second[k] = t.var_w[k].at(i, j1);
+        else first[k] = t.var_w[k].at(i, j0) * w0, second[k] = t.var_w[k].at(i, j1) * w1;
+    }
+    for (size_t c = 0; c < 2; ++c) {
+        const Plane& p = t.var_w[a + c];
+        const f8 row0 = p.at(i, j0) * w0, row1 = p.at(i, j1) * w1;
+        const f8 v00 = __builtin_shufflevector(row0, row0, 0, 0, 2, 2, 4, 4, 6, 6);
+        first[at + c] = second[at + c] = __builtin_shufflevector(row0, row0, 1, 1, 3, 3, 5, 5, 7, 7) - v00;
+        first[at + 2 + c] = second[at + 2 + c] = __builtin_shufflevector(row1, row1, 0, 0, 2, 2, 4, 4, 6, 6) - v00;
+    }
+}
+
 template <class S, bool Constant = false, int N, class T>
 inline std::array<T, N> interpolate_varyings(const TriangleSetup<N>& t, T i, T j) {
     if constexpr (DerivativeShader<S> && std::is_same_v<T, simd::f8>) {

@@ -228,7 +228,7 @@ struct TileBackEnd {
                 if (pending.count > 0) blend_row(blend, color_row, width, pending);
             }
         };
-        if constexpr (QuadRowShader<S> && !kStencil) {
+        if constexpr (QuadRowShader<S> && DerivativeShader<S> && !kStencil) {
             // A shader that shades two rows of quads at once (QuadRowShader) gets the groups
             // of a quads' first row (y even) and of the row below together, the first row's
             // span held until the second's comes. Each pixel's depth test, color and merge
@@ -257,7 +257,8 @@ struct TileBackEnd {
     // The groups of rows y (a quads' first) and y + 1, spans [begin0, end0) and [begin1,
     // end1): where both rows of a group have pixels that pass the depth test, shaded with one
     // call (QuadRowShader); else each row's on its own.
-    uint64_t draw_quad_rows(const TriangleSetup<N>& t, int y, int begin0, int end0, int begin1, int end1) const requires(QuadRowShader<S>) {
+    uint64_t draw_quad_rows(const TriangleSetup<N>& t, int y, int begin0, int end0, int begin1, int end1) const
+        requires(QuadRowShader<S> && DerivativeShader<S>) {
         using namespace simd;
         uint64_t shaded = 0;
         const int width = fb.width();
@@ -274,8 +275,13 @@ struct TileBackEnd {
             shaded += unsigned(__builtin_popcount(bits(pass[0]))) + unsigned(__builtin_popcount(bits(pass[1])));
             std::array<f8, 4> rgba[2];
             if (any(pass[0]) && any(pass[1])) {
-                run_fragment_quad_rows(shader, interpolate_varyings<S, kConstant>(t, i, j0), interpolate_varyings<S, kConstant>(t, i, j1), z[0], z[1],
-                                       t.front_facing, rgba[0], rgba[1]);
+                std::array<f8, N> v[2];
+                if (quad_row_lanes<S, kConstant>(t, i, j0)) {
+                    interpolate_quad_row_pair<S>(t, i, j0, v[0], v[1]);
+                } else {
+                    v[0] = interpolate_varyings<S, kConstant>(t, i, j0), v[1] = interpolate_varyings<S, kConstant>(t, i, j1);
+                }
+                run_fragment_quad_rows(shader, v[0], v[1], z[0], z[1], t.front_facing, rgba[0], rgba[1]);
             } else {
                 for (int r = 0; r < 2; ++r)
                     if (any(pass[r])) run_fragment_batch(shader, interpolate_varyings<S, kConstant>(t, i, r ? j1 : j0), z[r], t.front_facing, rgba[r]);
