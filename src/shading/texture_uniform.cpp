@@ -41,17 +41,6 @@ template <>
     out = {i8(index), i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low))};
 }
 #endif
-// Level k's lookup: its sample point, the footprints' texels, the filter. (The result by
-// reference: see gather.)
-template <bool Wide>
-inline void pot_level(const PotLevels& t, const i8& fu, const i8& fv, int k, Fixed8& out) {
-    LevelPoint p;
-    level_point<Wide>(t, fu, fv, k, p);
-    i8 texel[4];
-    load_footprints<Wide>(t.texels, p.index, texel);
-    out = bilinear16<Wide>(texel, p.fx, p.fy);
-}
-
 // The level(s) the lanes read, when all read the same: select_lod's, on eight lanes.
 struct UniformLevels {
     int level;
@@ -103,56 +92,34 @@ inline i8 fixed_point(const f8& u, float side) {
     return simd::to_int(reduce8<Wide>(u, Wrap::Repeat) * (256.0f * side));
 }
 
-// Linear textures: the fixed-point filter (sample_level_fixed).
-template <bool Wide>
-inline bool sample_uniform_linear(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
+// Linear textures: the fixed-point filter (sample_level_fixed), for G groups of eight lanes
+// whose derivatives d are the same: one group, or a row of quads' first and second rows
+// (Texture::sample_quad_rows), for which one level of detail then serves both. The work goes
+// phase by phase, all groups' texel addresses, then all their loads, then all the filtering,
+// so that a second group's loads do not queue behind the first's filter (a lookup is a long
+// chain of dependent steps; side by side, two overlap).
+template <bool Wide, int G>
+inline bool sample_uniform_linear(const PotLevels& t, const f8 (&u)[G], const f8 (&v)[G], const std::array<f8, 4>& d, MipFilter mip,
+                                  std::array<f8, 4>* const (&rgba)[G]) {
     using simd::to_int;
-    const i8 fu = fixed_point<Wide>(u, t.w), fv = fixed_point<Wide>(v, t.h);
-    Fixed8 f0, f1{};
-    UniformLevels l;
-    for (;;) {  // (twice only after a wrong guess, which guessed_right corrects)
-        const LevelGuess g = t_last_levels;
-        pot_level<Wide>(t, fu, fv, g.level, f0);
-        if (g.two) pot_level<Wide>(t, fu, fv, g.level + 1, f1);
-        if (!uniform_levels<Wide>(t, d, mip, l)) return false;
-        if (guessed_right(g, l)) [[likely]] break;
-    }
-    if (l.two) {
-        Fixed8 w;
-        spread<Wide>(to_int(l.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
-        f0 = {blend16<Wide>(f0.lo, f1.lo, w.lo), blend16<Wide>(f0.hi, f1.hi, w.hi)};
-    }
-    unit_of_fixed8<Wide>(f0, rgba);
-    return true;
-}
-
-// Two groups: a row of quads' first and second rows (Texture::sample_quad_rows). The
-// quads' derivatives are both groups', so one level of detail serves both; and the work goes
-// phase by phase, both groups' texel addresses, then all their loads, then all the
-// filtering, so that the second group's loads do not queue behind the first's filter (a
-// lookup is a long chain of dependent steps; side by side, two overlap).
-template <bool Wide>
-inline bool sample_uniform_linear_rows(const PotLevels& t, const f8 (&u)[2], const f8 (&v)[2], const std::array<f8, 4>& d, MipFilter mip,
-                                       std::array<f8, 4>* const (&rgba)[2]) {
-    using simd::to_int;
-    i8 fu[2], fv[2];
-    for (int g = 0; g < 2; ++g) fu[g] = fixed_point<Wide>(u[g], t.w), fv[g] = fixed_point<Wide>(v[g], t.h);
-    LevelPoint p[2][2];  // [group][first or second level]
-    i8 texel[2][2][4];
+    i8 fu[G], fv[G];
+    for (int g = 0; g < G; ++g) fu[g] = fixed_point<Wide>(u[g], t.w), fv[g] = fixed_point<Wide>(v[g], t.h);
+    LevelPoint p[G][2];  // [group][first or second level]
+    i8 texel[G][2][4];
     UniformLevels l;
     for (;;) {  // (twice only after a wrong guess, which guessed_right corrects)
         const LevelGuess guess = t_last_levels;
         const int levels = guess.two ? 2 : 1;
-        for (int g = 0; g < 2; ++g)
+        for (int g = 0; g < G; ++g)
             for (int k = 0; k < levels; ++k) level_point<Wide>(t, fu[g], fv[g], guess.level + k, p[g][k]);
-        for (int g = 0; g < 2; ++g)
+        for (int g = 0; g < G; ++g)
             for (int k = 0; k < levels; ++k) load_footprints<Wide>(t.texels, p[g][k].index, texel[g][k]);
         if (!uniform_levels<Wide>(t, d, mip, l)) return false;
         if (guessed_right(guess, l)) [[likely]] break;
     }
     Fixed8 w;
     if (l.two) spread<Wide>(to_int(l.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
-    for (int g = 0; g < 2; ++g) {
+    for (int g = 0; g < G; ++g) {
         Fixed8 f = bilinear16<Wide>(texel[g][0], p[g][0].fx, p[g][0].fy);
         if (l.two) {
             const Fixed8 f1 = bilinear16<Wide>(texel[g][1], p[g][1].fx, p[g][1].fy);
@@ -204,13 +171,17 @@ bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f
             if (simd::any(d0[k] != d1[k])) return false;  // (not the same quads': each its own level of detail)
         const f8 u[2] = {u0, u1}, v[2] = {v0, v1};
         std::array<f8, 4>* const rgba[2] = {&rgba0, &rgba1};
-        return sample_uniform_linear_rows<Wide>(t, u, v, d0, mip, rgba);
+        return sample_uniform_linear<Wide, 2>(t, u, v, d0, mip, rgba);
     });
 }
 
 bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
     if (srgb) return simd::on_best_path([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, mip, rgba); });
-    return simd::on_best_path([&]<bool Wide>() { return sample_uniform_linear<Wide>(t, u, v, d, mip, rgba); });
+    return simd::on_best_path([&]<bool Wide>() {
+        const f8 uu[1] = {u}, vv[1] = {v};
+        std::array<f8, 4>* const out[1] = {&rgba};
+        return sample_uniform_linear<Wide, 1>(t, uu, vv, d, mip, out);
+    });
 }
 
 }  // namespace softraster::lanes
