@@ -127,13 +127,15 @@ struct TileBackEnd {
                 queue.start(shader, fb);
                 for_each_triangle_setup<Samples, /*Planes=*/false, Flat, kConstant>(triangles, state, tx, ty, rect,
                                                                    [&](TriangleSetup<N>& setup, uint32_t) {
-                    if (Samples == 1 && is_large(setup.bounds)) {
-                        queue.flush();
-                        setup_planes<Flat, kConstant>(setup);
-                        shaded += draw_groups(setup);
-                    } else {
-                        shaded += queue_triangle(setup, queue);  // makes the planes if needed
+                    if constexpr (Samples == 1) {  // (else draw_groups would be compiled, never to run)
+                        if (is_large(setup.bounds)) {
+                            queue.flush();
+                            setup_planes<Flat, kConstant>(setup);
+                            shaded += draw_groups(setup);
+                            return;
+                        }
                     }
+                    shaded += queue_triangle(setup, queue);  // makes the planes if needed
                 });
                 queue.flush();
                 return shaded;
@@ -275,12 +277,10 @@ struct TileBackEnd {
             shaded += unsigned(__builtin_popcount(bits(pass[0]))) + unsigned(__builtin_popcount(bits(pass[1])));
             std::array<f8, 4> rgba[2];
             if (any(pass[0]) && any(pass[1])) {
+                // (The lanes are whole quads: x is a multiple of 8 and y even; draw_groups
+                // pairs no triangle whose varyings are constant.)
                 std::array<f8, N> v[2];
-                if (quad_row_lanes<S, kConstant>(t, i, j0)) {
-                    interpolate_quad_row_pair<S>(t, i, j0, v[0], v[1]);
-                } else {
-                    v[0] = interpolate_varyings<S, kConstant>(t, i, j0), v[1] = interpolate_varyings<S, kConstant>(t, i, j1);
-                }
+                interpolate_quad_row_pair<S>(t, i, j0, v[0], v[1]);
                 run_fragment_quad_rows(shader, v[0], v[1], z[0], z[1], t.front_facing, rgba[0], rgba[1]);
             } else {
                 for (int r = 0; r < 2; ++r)
