@@ -1,8 +1,36 @@
 #include "softraster/worker_pool.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace softraster {
+namespace {
+
+// How long an idle worker watches for the next loop before it sleeps, and how long a loop's
+// caller watches for its workers to finish before it sleeps (see worker_pool.h).
+constexpr auto kWatch = std::chrono::microseconds(200);
+
+inline void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+// Spins until done() or kWatch has passed; returns done().
+template <class F>
+bool watch(F&& done) {
+    if (done()) return true;
+    const auto until = std::chrono::steady_clock::now() + kWatch;
+    for (int k = 0;; ++k) {
+        for (int i = 0; i < 64; ++i) {
+            if (done()) return true;
+            cpu_relax();
+        }
+        if ((k & 15) == 15 && std::chrono::steady_clock::now() > until) return done();
+    }
+}
+
+}  // namespace
 
 WorkerPool::WorkerPool(unsigned threads) {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
@@ -23,18 +51,29 @@ void WorkerPool::run_items(unsigned thread) {
         (*job_)(i, thread);
 }
 
+bool WorkerPool::wait_for_loop(uint64_t seen) {
+    auto news = [&] { return stop_.load() || generation_.load() != seen; };
+    if (!watch(news)) {
+        std::unique_lock lock(mutex_);
+        wake_.wait(lock, news);
+    }
+    return !stop_.load();
+}
+
 void WorkerPool::worker_main(unsigned thread) {
     uint64_t seen = 0;
-    for (;;) {
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
-            if (stop_) return;
-            seen = generation_;
+    while (wait_for_loop(seen)) {
+        seen = generation_.load();
+        // Join, unless the loop has already ended (its caller did every item before this
+        // worker came). Joining first and looking second: the caller closes the loop, then
+        // waits until no one has joined, so it either waits for this worker or this worker
+        // sees the loop closed.
+        joined_.fetch_add(1);
+        if (open_.load()) run_items(thread);
+        if (joined_.fetch_sub(1) == 1) {
+            { std::lock_guard lock(mutex_); }  // (the caller is either before its check or asleep)
+            done_.notify_one();
         }
-        run_items(thread);
-        std::lock_guard lock(mutex_);
-        if (--busy_ == 0) done_.notify_one();
     }
 }
 
@@ -44,18 +83,22 @@ void WorkerPool::parallel_for(size_t count, const std::function<void(size_t, uns
         for (size_t i = 0; i < count; ++i) fn(i, 0);
         return;
     }
+    job_ = &fn;
+    count_ = count;
+    next_.store(0, std::memory_order_relaxed);
+    open_.store(true);
     {
-        std::lock_guard lock(mutex_);
-        job_ = &fn;
-        count_ = count;
-        next_.store(0, std::memory_order_relaxed);
-        busy_ = unsigned(workers_.size());
-        ++generation_;
+        std::lock_guard lock(mutex_);  // (a worker going to sleep sees the new generation or is woken)
+        generation_.fetch_add(1);
     }
     wake_.notify_all();
     run_items(0);
-    std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return busy_ == 0; });
+    open_.store(false);
+    auto finished = [&] { return joined_.load() == 0; };
+    if (!watch(finished)) {
+        std::unique_lock lock(mutex_);
+        done_.wait(lock, finished);
+    }
     job_ = nullptr;
 }
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -49,6 +50,18 @@ TEST(Clear, DepthOnlyLeavesColorAndStencil) {
         ASSERT_EQ(fb.depth_data()[i], 0.75f) << i;
         ASSERT_EQ(fb.color_data()[i], color) << i;
         ASSERT_EQ(fb.stencil_data()[i], 7) << i;
+    }
+}
+
+// Each plane starts on a cache line, so that two threads' tiles never share one
+// (CacheLineAllocator): large buffers too, which the C library maps 16 bytes past a page.
+TEST(Framebuffer, PlanesStartOnACacheLine) {
+    for (auto [w, h, samples] : {std::array{W, H, 1}, std::array{1920, 1080, 1}, std::array{333, 77, 4}}) {
+        Framebuffer fb(w, h, samples);
+        fb.add_stencil();
+        EXPECT_EQ(reinterpret_cast<uintptr_t>(fb.color_data()) % 64, 0u) << w;
+        EXPECT_EQ(reinterpret_cast<uintptr_t>(fb.depth_data()) % 64, 0u) << w;
+        EXPECT_EQ(reinterpret_cast<uintptr_t>(fb.stencil_data()) % 64, 0u) << w;
     }
 }
 

@@ -1,0 +1,63 @@
+// The worker pool (worker_pool.h): every index of a loop runs exactly once, on a thread
+// index below size(), and parallel_for returns only when all have finished, whether the
+// workers were watching for the loop or asleep, and for loops of fewer items than threads.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+#include <vector>
+
+#include "softraster/worker_pool.h"
+
+using namespace softraster;
+
+namespace {
+
+// Runs a loop of `count` items, each taking about `work`; checks each index ran once, on a
+// valid thread, and finished before parallel_for returned.
+void expect_loop_runs_each_item_once(WorkerPool& pool, size_t count, std::chrono::microseconds work) {
+    std::vector<std::atomic<int>> runs(count);
+    std::atomic<size_t> finished{0};
+    std::atomic<bool> bad_thread{false};
+    pool.parallel_for(count, [&](size_t i, unsigned thread) {
+        if (thread >= pool.size()) bad_thread = true;
+        const auto until = std::chrono::steady_clock::now() + work;
+        while (std::chrono::steady_clock::now() < until) {
+        }
+        runs[i].fetch_add(1);
+        finished.fetch_add(1);
+    });
+    EXPECT_EQ(finished.load(), count);  // (not one still running)
+    EXPECT_FALSE(bad_thread.load());
+    for (size_t i = 0; i < count; ++i) EXPECT_EQ(runs[i].load(), 1) << "item " << i << " of " << count;
+}
+
+}  // namespace
+
+TEST(WorkerPool, LoopsBackToBackRunEachItemOnce) {
+    for (unsigned threads : {1u, 2u, 3u, 8u}) {
+        WorkerPool pool(threads);
+        EXPECT_EQ(pool.size(), threads);
+        for (int loop = 0; loop < 200; ++loop)  // the workers still watching for the next loop
+            expect_loop_runs_each_item_once(pool, size_t(loop % 7), std::chrono::microseconds(loop % 3 == 0 ? 50 : 0));
+    }
+}
+
+TEST(WorkerPool, LoopsAfterTheWorkersSleptRunEachItemOnce) {
+    WorkerPool pool(3);
+    for (int loop = 0; loop < 12; ++loop) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(3));  // long enough for the workers to sleep
+        expect_loop_runs_each_item_once(pool, loop % 2 ? 2 : 40, std::chrono::microseconds(100));
+    }
+}
+
+TEST(WorkerPool, EveryThreadTakesPartInALongLoop) {
+    WorkerPool pool(2);
+    std::atomic<int> on_worker{0};
+    pool.parallel_for(64, [&](size_t, unsigned thread) {
+        if (thread == 1) on_worker.fetch_add(1);
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    });
+    EXPECT_GT(on_worker.load(), 0);  // 64 ms of items: the worker woke and took some
+}
