@@ -73,8 +73,8 @@ Picture draw_with(const SurfaceUniforms& uniforms, bool paired, bool blended, De
     Mesh mesh;
     mesh.vertices = random_triangles();
     for (size_t k = 0; k < mesh.vertices.size(); ++k) mesh.indices.push_back(uint32_t(k));
+    SceneRenderer::Draw d;  // (the recorded draw points at its uniforms until finish())
     if (paired) {
-        SceneRenderer::Draw d;
         d.mesh = &mesh;
         d.uniforms = uniforms;
         d.colored = true;
