@@ -16,18 +16,21 @@ inline void cpu_relax() {
 #endif
 }
 
-// Spins until done() or kWatch has passed; returns done().
+// Returns once done(): spins for up to kWatch, then sleeps on `cv` (whoever makes done()
+// true takes `mutex` before notifying, so the wake-up is not lost).
 template <class F>
-bool watch(F&& done) {
-    if (done()) return true;
+void watch_then_sleep(std::mutex& mutex, std::condition_variable& cv, F&& done) {
+    if (done()) return;
     const auto until = std::chrono::steady_clock::now() + kWatch;
     for (int k = 0;; ++k) {
         for (int i = 0; i < 64; ++i) {
-            if (done()) return true;
+            if (done()) return;
             cpu_relax();
         }
-        if ((k & 15) == 15 && std::chrono::steady_clock::now() > until) return done();
+        if ((k & 15) == 15 && std::chrono::steady_clock::now() > until) break;
     }
+    std::unique_lock lock(mutex);
+    cv.wait(lock, done);
 }
 
 }  // namespace
@@ -52,11 +55,7 @@ void WorkerPool::run_items(unsigned thread) {
 }
 
 bool WorkerPool::wait_for_loop(uint64_t seen) {
-    auto news = [&] { return stop_.load() || generation_.load() != seen; };
-    if (!watch(news)) {
-        std::unique_lock lock(mutex_);
-        wake_.wait(lock, news);
-    }
+    watch_then_sleep(mutex_, wake_, [&] { return stop_.load() || generation_.load() != seen; });
     return !stop_.load();
 }
 
@@ -94,11 +93,7 @@ void WorkerPool::parallel_for(size_t count, const std::function<void(size_t, uns
     wake_.notify_all();
     run_items(0);
     open_.store(false);
-    auto finished = [&] { return joined_.load() == 0; };
-    if (!watch(finished)) {
-        std::unique_lock lock(mutex_);
-        done_.wait(lock, finished);
-    }
+    watch_then_sleep(mutex_, done_, [&] { return joined_.load() == 0; });
     job_ = nullptr;
 }
 
