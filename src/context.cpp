@@ -82,26 +82,32 @@ void Context::execute() {
     // passes (hidden_surface_removal.h); everything else one command after another.
     const unsigned threads = pool_ ? pool_->size() : 1;
     const size_t tile_samples = size_t(kTileSize) * kTileSize * size_t(fb_->samples());
-    std::vector<uint64_t> shaded(threads, 0);
+    // Each thread's count on a cache line of its own: counts side by side would bounce their
+    // line between the cores at every draw of every tile.
+    struct alignas(64) Count {
+        uint64_t n = 0;
+    };
+    std::vector<Count> shaded(threads);
     owners_.resize(size_t(threads) * tile_samples);
     for_each_item(pool_, size_t(target.grid.count()), [&](size_t tile, unsigned thread) {
         const Rect rect = target.grid.tile_rect(int(tile));
         uint32_t* owners = owners_.data() + size_t(thread) * tile_samples;
         const std::span<Command* const> draws(tile_commands_.data() + tile_first_[tile], tile_first_[tile + 1] - tile_first_[tile]);
+        uint64_t& count = shaded[thread].n;
         for (size_t c = 0; c < draws.size();) {
             const auto [end, worth_it] = hidden_surface_run(draws, c, int(tile), rect);
             if (!worth_it) {
-                for (; c < end; ++c) shaded[thread] += draws[c]->draw_tile(int(tile), rect, target);
+                for (; c < end; ++c) count += draws[c]->draw_tile(int(tile), rect, target);
                 continue;
             }
             std::fill_n(owners, tile_samples, kNoOwner);
             for (size_t k = c; k < end; ++k) draws[k]->visibility_pass(int(tile), rect, target, uint32_t(k - c), owners);
-            for (size_t k = c; k < end; ++k) shaded[thread] += draws[k]->shading_pass(int(tile), rect, target, uint32_t(k - c), owners);
+            for (size_t k = c; k < end; ++k) count += draws[k]->shading_pass(int(tile), rect, target, uint32_t(k - c), owners);
             c = end;
         }
     });
     fragments_shaded_ = 0;
-    for (uint64_t s : shaded) fragments_shaded_ += s;
+    for (const Count& s : shaded) fragments_shaded_ += s.n;
 }
 
 }  // namespace softraster

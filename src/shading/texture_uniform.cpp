@@ -32,11 +32,17 @@ template <>
     const __m256i y = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fv), _mm_cvtsi32_si128(std::min(k, t.log2_h))), _mm256_set1_epi32(128));
     const __m256i i0 = _mm256_and_si256(_mm256_srai_epi32(x, 8), _mm256_set1_epi32(t.width[k] - 1));
     const __m256i j0 = _mm256_and_si256(_mm256_srai_epi32(y, 8), _mm256_set1_epi32(t.height[k] - 1));
-    // tile_index8, as (((j0 / 4) tiles_x + i0 / 4) 5 + j0 % 4) 5 + i0 % 4 + offset
-    const __m256i tile = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_srai_epi32(j0, 2), _mm256_set1_epi32(t.tiles_x[k])), _mm256_srai_epi32(i0, 2));
-    const __m256i three = _mm256_set1_epi32(3), five = _mm256_set1_epi32(Texture::kTileSide);
-    const __m256i row = _mm256_add_epi32(_mm256_mullo_epi32(tile, five), _mm256_and_si256(j0, three));
-    const __m256i index = _mm256_add_epi32(_mm256_add_epi32(_mm256_mullo_epi32(row, five), _mm256_and_si256(i0, three)), _mm256_set1_epi32(t.offset[k]));
+    // tile_index8, as (((j0 / 4) tiles_x + i0 / 4) 5 + j0 % 4) 5 + i0 % 4 + offset, with shifts
+    // and adds for the products (tiles_x is a power of two here): a multiply's 10-cycle latency
+    // three times over would lengthen the chain the texel loads wait on.
+    static_assert(Texture::kTileSide == 5);
+    const __m128i log2_tiles_x = _mm_cvtsi32_si128(std::countr_zero(unsigned(t.tiles_x[k])));
+    const __m256i tile = _mm256_add_epi32(_mm256_sll_epi32(_mm256_srai_epi32(j0, 2), log2_tiles_x), _mm256_srai_epi32(i0, 2));
+    const __m256i three = _mm256_set1_epi32(3);
+    const __m256i tile5 = _mm256_add_epi32(_mm256_slli_epi32(tile, 2), tile);
+    const __m256i row = _mm256_add_epi32(tile5, _mm256_and_si256(j0, three));
+    const __m256i row5 = _mm256_add_epi32(_mm256_slli_epi32(row, 2), row);
+    const __m256i index = _mm256_add_epi32(_mm256_add_epi32(row5, _mm256_and_si256(i0, three)), _mm256_set1_epi32(t.offset[k]));
     const __m256i low = _mm256_set1_epi32(255);
     out = {i8(index), i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low))};
 }
@@ -166,7 +172,7 @@ bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) {
     // (All of it in the lambda, the CPU path's own copy: vectors compared or copied outside it
     // would be compiled without AVX, lane by lane.)
-    return simd::on_best_path([&]<bool Wide>() {
+    return on_best_path_lean([&]<bool Wide>() {
         for (size_t k = 0; k < 4; ++k)
             if (simd::any(d0[k] != d1[k])) return false;  // (not the same quads': each its own level of detail)
         const f8 u[2] = {u0, u1}, v[2] = {v0, v1};
@@ -176,8 +182,8 @@ bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f
 }
 
 bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
-    if (srgb) return simd::on_best_path([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, mip, rgba); });
-    return simd::on_best_path([&]<bool Wide>() {
+    if (srgb) return on_best_path_lean([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, mip, rgba); });
+    return on_best_path_lean([&]<bool Wide>() {
         const f8 uu[1] = {u}, vv[1] = {v};
         std::array<f8, 4>* const out[1] = {&rgba};
         return sample_uniform_linear<Wide, 1>(t, uu, vv, d, mip, out);
