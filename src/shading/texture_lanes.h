@@ -119,19 +119,6 @@ inline void blend_levels_float(std::array<f8, 4>& c0, const std::array<f8, 4>& c
     for (size_t k = 0; k < 4; ++k) c0[k] = c0[k] + (c1[k] - c0[k]) * w;
 }
 
-// simd::on_best_path with the generic copy out of line. The lookups are called for every
-// group of eight pixels; a generic copy inlined beside the AVX2 call would make every call
-// set up its stack frame (some 3 KB) on the AVX2 path too.
-template <class F>
-[[gnu::noinline]] auto run_generic_apart(const F& f) {
-    return f.template operator()<false>();
-}
-template <class F>
-auto on_best_path_lean(const F& f) {
-    if (SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2()) return simd::run_avx2(f);
-    return run_generic_apart(f);
-}
-
 // A level's numbers, per lane.
 struct LaneLevels {
     i8 width, height, tiles_x, offset;

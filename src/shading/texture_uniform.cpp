@@ -172,7 +172,7 @@ bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) {
     // (All of it in the lambda, the CPU path's own copy: vectors compared or copied outside it
     // would be compiled without AVX, lane by lane.)
-    return on_best_path_lean([&]<bool Wide>() {
+    return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() {
         for (size_t k = 0; k < 4; ++k)
             if (simd::any(d0[k] != d1[k])) return false;  // (not the same quads': each its own level of detail)
         const f8 u[2] = {u0, u1}, v[2] = {v0, v1};
@@ -182,8 +182,8 @@ bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f
 }
 
 bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
-    if (srgb) return on_best_path_lean([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, mip, rgba); });
-    return on_best_path_lean([&]<bool Wide>() {
+    if (srgb) return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, mip, rgba); });
+    return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() {
         const f8 uu[1] = {u}, vv[1] = {v};
         std::array<f8, 4>* const out[1] = {&rgba};
         return sample_uniform_linear<Wide, 1>(t, uu, vv, d, mip, out);

@@ -62,10 +62,19 @@ template <class F>
 auto run_generic(const F& f) {
     return f.template operator()<false>();
 }
+// GenericApart: the generic copy out of line, for a small function called very often (a
+// texture lookup per eight pixels). Inlined beside the AVX2 call, its stack frame (some
+// kilobytes) would be set up on every call of the AVX2 path too.
 template <class F>
+[[gnu::noinline]] auto run_generic_apart(const F& f) {
+    return f.template operator()<false>();
+}
+inline constexpr bool kGenericApart = true;
+template <bool GenericApart = false, class F>
 auto on_best_path(const F& f) {
     if (SOFTRASTER_HAS_AVX2_PATH && cpu_has_avx2()) return run_avx2(f);
-    return run_generic(f);
+    if constexpr (GenericApart) return run_generic_apart(f);
+    else return run_generic(f);
 }
 
 using f8 = float __attribute__((vector_size(32)));
