@@ -67,7 +67,7 @@ auto run_generic(const F& f) {
 // kilobytes) would be set up on every call of the AVX2 path too.
 template <class F>
 [[gnu::noinline]] auto run_generic_apart(const F& f) {
-    return f.template operator()<false>();
+    return run_generic(f);
 }
 inline constexpr bool kGenericApart = true;
 template <bool GenericApart = false, class F>
