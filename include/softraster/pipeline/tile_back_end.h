@@ -107,10 +107,17 @@ struct TileBackEnd {
     //   triangles at least 16 pixels wide, where the lanes are mostly full.
     // - PixelByPixel: everything else (blended MSAA draws, shaders without a batch version
     //   or that may discard, narrow triangles on the generic path): one fragment at a time.
+    //   The queue is in the AVX2 copy only. In the generic one, where eight lanes are two
+    //   halves and the queue's lane shuffles are slow, the other two ways were faster (the
+    //   same pixels: bench_highpoly 296 -> 190 ms a frame), and without it each model's
+    //   draws compile in a fifth less time (docs/performance.md, "Build time").
     enum class Strategy { FragmentQueue, EightPixelGroups, PixelByPixel };
     static constexpr bool kQueueable = BatchShader<S> && PureShader<S> && !Blended;
+    template <bool WideLanes>
+    static constexpr bool kQueued = kQueueable && WideLanes;
+    template <bool WideLanes>
     Strategy strategy() const {
-        if (kQueueable && state.color_write && blend.color_mask) return Strategy::FragmentQueue;
+        if (kQueued<WideLanes> && state.color_write && blend.color_mask) return Strategy::FragmentQueue;
         return Samples == 1 && BatchShader<S> ? Strategy::EightPixelGroups : Strategy::PixelByPixel;
     }
 
@@ -119,8 +126,8 @@ struct TileBackEnd {
     template <bool WideLanes>
     uint64_t draw(int tx, int ty, const Rect& rect) const {
         uint64_t shaded = 0;
-        if constexpr (kQueueable) {
-            if (strategy() == Strategy::FragmentQueue) {
+        if constexpr (kQueued<WideLanes>) {
+            if (strategy<WideLanes>() == Strategy::FragmentQueue) {
                 // One queue per thread, off the stack: a few kilobytes that would otherwise
                 // sit among the tile loop's spilled registers.
                 static thread_local FragmentQueue<S, Samples> queue;
