@@ -108,9 +108,9 @@ struct TileBackEnd {
     // - PixelByPixel: everything else (blended MSAA draws, shaders without a batch version
     //   or that may discard, narrow triangles on the generic path): one fragment at a time.
     //   The queue is in the AVX2 copy only. In the generic one, where eight lanes are two
-    //   halves and the queue's lane shuffles are slow, the other two ways were faster (the
-    //   same pixels: bench_highpoly 296 -> 190 ms a frame), and without it each model's
-    //   draws compile in a fifth less time (docs/performance.md, "Build time").
+    //   halves and the queue's lane shuffles are slow, the other two ways, with the same
+    //   pixels, were faster, and without it each model's draws compile in a fifth less time
+    //   (docs/performance.md: the fragment queue, and "Build time").
     enum class Strategy { FragmentQueue, EightPixelGroups, PixelByPixel };
     static constexpr bool kQueueable = BatchShader<S> && PureShader<S> && !Blended;
     template <bool WideLanes>
