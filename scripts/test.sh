@@ -21,8 +21,8 @@ run_suite release -DCMAKE_BUILD_TYPE=Release -DSOFTRASTER_COURSE=ON
 if [ "${1:-}" != "release" ]; then
   # detect_leaks: LeakSanitizer is part of ASan; halt on the first UB report.
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  # -O0 -g1 (line tables: sanitizer reports keep file and line): the build takes 5 1/2
-  # minutes instead of 8 at -O1 (docs/performance.md, "Build time"). Pixels are the Release
+  # -O0 -g1 (line tables: sanitizer reports keep file and line): the build is cheaper than
+  # the suite's longer run (docs/performance.md, "Build time"). Pixels are the Release
   # build's to check: the llvmpipe comparisons run there only.
   run_suite asan -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O0 -g1 -DNDEBUG" -DSOFTRASTER_SANITIZE=ON -DSOFTRASTER_COURSE=OFF
 fi

@@ -113,11 +113,8 @@ struct TileBackEnd {
     //   (docs/performance.md: the fragment queue, and "Build time").
     enum class Strategy { FragmentQueue, EightPixelGroups, PixelByPixel };
     static constexpr bool kQueueable = BatchShader<S> && PureShader<S> && !Blended;
-    template <bool WideLanes>
-    static constexpr bool kQueued = kQueueable && WideLanes;
-    template <bool WideLanes>
     Strategy strategy() const {
-        if (kQueued<WideLanes> && state.color_write && blend.color_mask) return Strategy::FragmentQueue;
+        if (kQueueable && state.color_write && blend.color_mask) return Strategy::FragmentQueue;
         return Samples == 1 && BatchShader<S> ? Strategy::EightPixelGroups : Strategy::PixelByPixel;
     }
 
@@ -126,8 +123,8 @@ struct TileBackEnd {
     template <bool WideLanes>
     uint64_t draw(int tx, int ty, const Rect& rect) const {
         uint64_t shaded = 0;
-        if constexpr (kQueued<WideLanes>) {
-            if (strategy<WideLanes>() == Strategy::FragmentQueue) {
+        if constexpr (kQueueable && WideLanes) {
+            if (strategy() == Strategy::FragmentQueue) {
                 // One queue per thread, off the stack: a few kilobytes that would otherwise
                 // sit among the tile loop's spilled registers.
                 static thread_local FragmentQueue<S, Samples> queue;
