@@ -3,12 +3,17 @@
 each thread count, and prints a table with the ratios (and writes it to --report).
 
   scripts/bench-compare.py [--build build-release] [--threads 1,2] [--frames 10] [--warmup 2]
-                           [--report docs/performance.md] [SCENE.json ...]
+                           [--rounds 3] [--report docs/performance.md] [SCENE.json ...]
 
 softraster: `softraster bench SCENE --threads T --json` (clear, all draws, MSAA resolve).
 llvmpipe:   `glref SCENE --time` with LP_NUM_THREADS=T (clear, all draws, resolve, glFinish).
-Both report the median frame time of --frames frames after --warmup frames."""
-import argparse, glob, json, os, platform, subprocess, sys, time
+Both report the median frame time of --frames frames after --warmup frames. Each scene and
+thread count is timed in --rounds rounds, the two renderers one after the other in each
+(llvmpipe first in every other round); a round's ratio is of its two medians, and the row
+gives the median of the rounds' times and of their ratios. On a shared machine, whose speed
+drifts from second to second, a single pair of runs can land one renderer in a slow spell;
+the rounds' ratios show it, and their median does not follow one outlier."""
+import argparse, glob, json, os, platform, statistics, subprocess, sys, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -45,6 +50,7 @@ def main():
     ap.add_argument('--threads', default='1,2')
     ap.add_argument('--frames', type=int, default=10)
     ap.add_argument('--warmup', type=int, default=2)
+    ap.add_argument('--rounds', type=int, default=3)
     ap.add_argument('--report')
     ap.add_argument('scenes', nargs='*')
     a = ap.parse_args()
@@ -57,16 +63,24 @@ def main():
         name = os.path.splitext(os.path.basename(scene))[0]
         for t in threads:
             env = dict(os.environ, LP_NUM_THREADS=str(t))
-            ours = run_json([sr, 'bench', scene, '--threads', str(t), '--frames', str(a.frames), '--warmup', str(a.warmup), '--json'])
+            ours_cmd = [sr, 'bench', scene, '--threads', str(t), '--frames', str(a.frames), '--warmup', str(a.warmup), '--json']
             if not llvmpipe_can_draw(scene):
-                rows.append((name, t, ours['median_ms'], None, None))
-                print('%-22s %d thread(s): softraster %8.1f ms   (llvmpipe cannot draw it)' % (name, t, ours['median_ms']), flush=True)
+                ours = statistics.median(run_json(ours_cmd)['median_ms'] for _ in range(a.rounds))
+                rows.append((name, t, ours, None, None))
+                print('%-22s %d thread(s): softraster %8.1f ms   (llvmpipe cannot draw it)' % (name, t, ours), flush=True)
                 continue
-            theirs = run_json([gl, scene, '--time', '--frames', str(a.frames), '--warmup', str(a.warmup)], env)
-            ratio = ours['median_ms'] / theirs['median_ms']
-            rows.append((name, t, ours['median_ms'], theirs['median_ms'], ratio))
-            print('%-22s %d thread(s): softraster %8.1f ms   llvmpipe %8.1f ms   ratio %.2f %s' %
-                  (name, t, ours['median_ms'], theirs['median_ms'], ratio, 'ok' if ratio <= 0.5 else 'MISSED'), flush=True)
+            theirs_cmd = [gl, scene, '--time', '--frames', str(a.frames), '--warmup', str(a.warmup)]
+            ours, theirs, ratios = [], [], []
+            for r in range(a.rounds):
+                if r % 2: theirs.append(run_json(theirs_cmd, env)['median_ms'])
+                ours.append(run_json(ours_cmd)['median_ms'])
+                if not r % 2: theirs.append(run_json(theirs_cmd, env)['median_ms'])
+                ratios.append(ours[-1] / theirs[-1])
+            ratio = statistics.median(ratios)
+            rows.append((name, t, statistics.median(ours), statistics.median(theirs), ratio))
+            print('%-22s %d thread(s): softraster %8.1f ms   llvmpipe %8.1f ms   ratio %.2f %s   (rounds: %s)' %
+                  (name, t, statistics.median(ours), statistics.median(theirs), ratio, 'ok' if ratio <= 0.5 else 'MISSED',
+                   ' '.join('%.2f' % x for x in ratios)), flush=True)
     by = {(n, t): (s, l) for n, t, s, l, _ in rows}
     scaling = []
     if 1 in threads and 2 in threads:
@@ -76,7 +90,7 @@ def main():
     if a.report:
         tail = kept_tail(a.report)
         with open(a.report, 'w') as f:
-            f.write(HEAD.format(date=time.strftime('%Y-%m-%d'), machine=machine(), frames=a.frames, warmup=a.warmup,
+            f.write(HEAD.format(date=time.strftime('%Y-%m-%d'), machine=machine(), frames=a.frames, warmup=a.warmup, rounds=a.rounds,
                                 threads=a.threads))
             f.write('| scene | threads | softraster (ms) | llvmpipe (ms) | softraster / llvmpipe | target (<= 0.5) |\n|---|---|---|---|---|---|\n')
             for n, t, s, l, r in rows:
@@ -100,7 +114,8 @@ at the same thread count. Lower is better; the target is softraster at most half
 llvmpipe's median frame time.
 
 - Machine: {machine}
-- Date: {date}; {frames} timed frames after {warmup} warm-up frames; threads {threads}
+- Date: {date}; {frames} timed frames after {warmup} warm-up frames; threads {threads}; {rounds}
+  rounds, the two renderers in turn (a row: the median of the rounds' times and of their ratios)
 - Command: `scripts/bench-compare.py --report docs/performance.md` after
   `cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release && cmake --build build-release`
 - softraster: `softraster bench SCENE --threads T --json` (clear, every draw, and with MSAA the

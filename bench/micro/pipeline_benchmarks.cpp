@@ -170,6 +170,28 @@ void BM_TextureTrilinear8(benchmark::State& state) {
 BENCHMARK(BM_TextureTrilinear8<false>);
 BENCHMARK(BM_TextureTrilinear8<true>);
 
+// The same lookups two groups at a time, as the fragment shader asks for them: a row of
+// quads' two pixel rows, one level of detail for both (Texture::sample_quad_rows).
+void BM_TextureTrilinearRows(benchmark::State& state) {
+    Image img(1024, 1024);
+    for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = Rgba8{uint8_t(i), uint8_t(i >> 3), uint8_t(i >> 6), 255};
+    const Texture tex(img);
+    const Sampler s{Filter::Bilinear, Filter::Bilinear, MipFilter::Linear, Wrap::Repeat, Wrap::Repeat, glm::vec4(0.0f), 1};
+    const float du = 5.3f / 1024.0f;
+    const std::array<simd::f8, 4> d{simd::splat(du), simd::splat(0.0f), simd::splat(0.0f), simd::splat(du * 0.4f)};
+    simd::f8 u, v0 = simd::splat(0.3f), v1 = simd::splat(0.3f + du * 0.4f);
+    for (int k = 0; k < simd::kLanes; ++k) u[k] = float(k) * du;
+    std::array<simd::f8, 4> rgba0, rgba1;
+    for (auto _ : state) {
+        tex.sample_quad_rows(u, v0, u, v1, d, d, s, rgba0, rgba1);
+        benchmark::DoNotOptimize(rgba0), benchmark::DoNotOptimize(rgba1);
+        u = u + 8.0f * du, v0 = v0 + 0.0007f, v1 = v1 + 0.0007f;
+        if (u[0] > 64.0f) u = u - 64.0f;
+    }
+    state.SetItemsProcessed(state.iterations() * 2 * simd::kLanes);
+}
+BENCHMARK(BM_TextureTrilinearRows);
+
 void BM_Resolve(benchmark::State& state) {
     Framebuffer fb(1920, 1080, int(state.range(0)));
     fb.clear_color(glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));

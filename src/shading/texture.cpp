@@ -94,6 +94,11 @@ Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpa
     for (size_t k = 0; k < 16; ++k) {
         const Level& l = levels_[std::min(k, levels_.size() - 1)];
         tables_.width[k] = l.width, tables_.height[k] = l.height, tables_.tiles_x[k] = l.tiles_x, tables_.offset[k] = l.offset;
+        const int level = int(std::min(k, levels_.size() - 1));
+        tables_.shift_u[k] = std::min(level, int(std::bit_width(unsigned(image.width))) - 1);
+        tables_.shift_v[k] = std::min(level, int(std::bit_width(unsigned(image.height))) - 1);
+        tables_.mask_w[k] = l.width - 1, tables_.mask_h[k] = l.height - 1;
+        tables_.log2_tiles_x[k] = int(std::bit_width(unsigned(l.tiles_x))) - 1;
     }
     pot_ = std::has_single_bit(unsigned(image.width)) && std::has_single_bit(unsigned(image.height));
     storage_.assign(size_t(offset) + 15, 0u);

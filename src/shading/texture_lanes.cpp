@@ -207,8 +207,7 @@ void Texture::sample_quad_rows(const f8& u0, const f8& v0, const f8& u1, const f
 }
 
 lanes::PotLevels Texture::pot_levels() const {
-    return {texels(), tables_.width.data(), tables_.height.data(), tables_.tiles_x.data(), tables_.offset.data(),
-            levels(), std::countr_zero(unsigned(width())), std::countr_zero(unsigned(height())), float(width()), float(height())};
+    return {texels(), &tables_, levels(), float(width()), float(height())};
 }
 
 }  // namespace softraster

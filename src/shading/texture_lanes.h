@@ -299,8 +299,8 @@ inline Fixed8 bilinear16(const i8 (&texels)[4], const i8& fx, const i8& fy) {
 // it reads: the first 16 levels' (LevelTables) and level 0's sides.
 struct PotLevels {
     const uint32_t* texels;
-    const int32_t *width, *height, *tiles_x, *offset;
-    int levels, log2_w, log2_h;
+    const LevelTables* tables;
+    int levels;
     float w, h;
 };
 // The lookup in the CPU's best copy, sRGB textures filtered in float, others in fixed

@@ -21,28 +21,32 @@ struct LevelPoint {
 };
 template <bool Wide>
 inline void level_point(const PotLevels& t, const i8& fu, const i8& fv, int k, LevelPoint& out) {
-    const i8 x = (fu >> std::min(k, t.log2_w)) - 128, y = (fv >> std::min(k, t.log2_h)) - 128;
-    const i8 i0 = (x >> 8) & (t.width[k] - 1), j0 = (y >> 8) & (t.height[k] - 1);
-    out = {tile_index8(t.offset[k], t.tiles_x[k], i0, j0), x & 255, y & 255};
+    const LevelTables& n = *t.tables;
+    const i8 x = (fu >> n.shift_u[k]) - 128, y = (fv >> n.shift_v[k]) - 128;
+    const i8 i0 = (x >> 8) & n.mask_w[k], j0 = (y >> 8) & n.mask_h[k];
+    out = {tile_index8(n.offset[k], n.tiles_x[k], i0, j0), x & 255, y & 255};
 }
 #if SOFTRASTER_HAS_AVX2_PATH
+// The level's numbers come as broadcasts from memory (LevelTables), and the shifts by them
+// as per-lane shifts of a broadcast count: neither takes the shuffle port, which the texel
+// loads keep busy.
 template <>
 [[gnu::target("avx2")]] inline void level_point<true>(const PotLevels& t, const i8& fu, const i8& fv, int k, LevelPoint& out) {
-    const __m256i x = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fu), _mm_cvtsi32_si128(std::min(k, t.log2_w))), _mm256_set1_epi32(128));
-    const __m256i y = _mm256_sub_epi32(_mm256_sra_epi32(__m256i(fv), _mm_cvtsi32_si128(std::min(k, t.log2_h))), _mm256_set1_epi32(128));
-    const __m256i i0 = _mm256_and_si256(_mm256_srai_epi32(x, 8), _mm256_set1_epi32(t.width[k] - 1));
-    const __m256i j0 = _mm256_and_si256(_mm256_srai_epi32(y, 8), _mm256_set1_epi32(t.height[k] - 1));
+    const LevelTables& n = *t.tables;
+    const __m256i x = _mm256_sub_epi32(_mm256_srav_epi32(__m256i(fu), _mm256_set1_epi32(n.shift_u[k])), _mm256_set1_epi32(128));
+    const __m256i y = _mm256_sub_epi32(_mm256_srav_epi32(__m256i(fv), _mm256_set1_epi32(n.shift_v[k])), _mm256_set1_epi32(128));
+    const __m256i i0 = _mm256_and_si256(_mm256_srai_epi32(x, 8), _mm256_set1_epi32(n.mask_w[k]));
+    const __m256i j0 = _mm256_and_si256(_mm256_srai_epi32(y, 8), _mm256_set1_epi32(n.mask_h[k]));
     // tile_index8, as (((j0 / 4) tiles_x + i0 / 4) 5 + j0 % 4) 5 + i0 % 4 + offset, with shifts
     // and adds for the products (tiles_x is a power of two here): a multiply's 10-cycle latency
     // three times over would lengthen the chain the texel loads wait on.
     static_assert(Texture::kTileSide == 5);
-    const __m128i log2_tiles_x = _mm_cvtsi32_si128(std::countr_zero(unsigned(t.tiles_x[k])));
-    const __m256i tile = _mm256_add_epi32(_mm256_sll_epi32(_mm256_srai_epi32(j0, 2), log2_tiles_x), _mm256_srai_epi32(i0, 2));
+    const __m256i tile = _mm256_add_epi32(_mm256_sllv_epi32(_mm256_srai_epi32(j0, 2), _mm256_set1_epi32(n.log2_tiles_x[k])), _mm256_srai_epi32(i0, 2));
     const __m256i three = _mm256_set1_epi32(3);
     const __m256i tile5 = _mm256_add_epi32(_mm256_slli_epi32(tile, 2), tile);
     const __m256i row = _mm256_add_epi32(tile5, _mm256_and_si256(j0, three));
     const __m256i row5 = _mm256_add_epi32(_mm256_slli_epi32(row, 2), row);
-    const __m256i index = _mm256_add_epi32(_mm256_add_epi32(row5, _mm256_and_si256(i0, three)), _mm256_set1_epi32(t.offset[k]));
+    const __m256i index = _mm256_add_epi32(_mm256_add_epi32(row5, _mm256_and_si256(i0, three)), _mm256_set1_epi32(n.offset[k]));
     const __m256i low = _mm256_set1_epi32(255);
     out = {i8(index), i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low))};
 }
@@ -141,12 +145,12 @@ inline bool sample_uniform_linear(const PotLevels& t, const f8 (&u)[G], const f8
 template <bool Wide>
 inline void srgb_level(const PotLevels& t, const uint32_t* decode, const f8& ur, const f8& vr, int level, std::array<f8, 4>& out) {
     using simd::to_float;
-    const int w = t.width[level], h = t.height[level];
-    const f8 x = ur * float(w) - 0.5f, y = vr * float(h) - 0.5f;
+    const LevelTables& n = *t.tables;
+    const f8 x = ur * float(n.width[level]) - 0.5f, y = vr * float(n.height[level]) - 0.5f;
     const i8 i0 = floor_small8(x), j0 = floor_small8(y);
     const f8 fx = x - to_float(i0), fy = y - to_float(j0);
     i8 texel[4];
-    load_footprints<Wide>(t.texels, tile_index8(t.offset[level], t.tiles_x[level], i0 & (w - 1), j0 & (h - 1)), texel);
+    load_footprints<Wide>(t.texels, tile_index8(n.offset[level], n.tiles_x[level], i0 & n.mask_w[level], j0 & n.mask_h[level]), texel);
     std::array<f8, 4> c[4];
     for (size_t p = 0; p < 4; ++p) texel_channels<Wide, true>(texel[p], decode, c[p]);
     bilinear_float(c, fx, fy, out);
@@ -173,8 +177,8 @@ bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f
     // (All of it in the lambda, the CPU path's own copy: vectors compared or copied outside it
     // would be compiled without AVX, lane by lane.)
     return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() {
-        for (size_t k = 0; k < 4; ++k)
-            if (simd::any(d0[k] != d1[k])) return false;  // (not the same quads': each its own level of detail)
+        // (Not the same quads' derivatives: each group its own level of detail.)
+        if (simd::any((d0[0] != d1[0]) | (d0[1] != d1[1]) | (d0[2] != d1[2]) | (d0[3] != d1[3]))) return false;
         const f8 u[2] = {u0, u1}, v[2] = {v0, v1};
         std::array<f8, 4>* const rgba[2] = {&rgba0, &rgba1};
         return sample_uniform_linear<Wide, 2>(t, u, v, d0, mip, rgba);

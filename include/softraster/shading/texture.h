@@ -41,7 +41,17 @@ namespace softraster {
 
 namespace lanes {
 struct PotLevels;  // (the eight-lane lookup's view of the levels: src/shading/texture_lanes.h)
-}
+// The first 16 levels' numbers as lane tables (sample8 picks a level per lane with a
+// permute); entries past the last level repeat it. The last five serve the common lookup
+// (src/shading/texture_uniform.cpp): in memory, each is one broadcast there, where working
+// it out from the sizes would take the shuffle port the texel loads wait on.
+struct LevelTables {
+    std::array<int32_t, 16> width, height, tiles_x, offset;
+    std::array<int32_t, 16> shift_u, shift_v;  // a sample point of level 0 to this level: min(level, log2 side)
+    std::array<int32_t, 16> mask_w, mask_h;    // side - 1 (a power-of-two texture's wrap)
+    std::array<int32_t, 16> log2_tiles_x;      // (tiles_x, a power of two)
+};
+}  // namespace lanes
 
 enum class Filter { Nearest, Bilinear };          // within a level: GL_NEAREST, GL_LINEAR
 enum class MipFilter { None, Nearest, Linear };  // between levels: ..._MIPMAP_NEAREST, ..._MIPMAP_LINEAR
@@ -151,11 +161,7 @@ private:
     size_t aligned_ = 0;              // index of the first texel: at a 64-byte boundary
     bool srgb_ = false;
     bool pot_ = false;  // both sides powers of two (then every level's are)
-    // The first 16 levels' numbers as lane tables (sample8 picks a level per lane with a
-    // permute); entries past the last level repeat it.
-    struct LevelTables {
-        std::array<int32_t, 16> width, height, tiles_x, offset;
-    } tables_{};
+    lanes::LevelTables tables_{};
     template <Filter F>
     glm::vec4 sample_level(int level, glm::vec2 uv, const Sampler& s) const;
     template <Filter F>
