@@ -206,6 +206,13 @@ void Texture::sample_quad_rows(const f8& u0, const f8& v0, const f8& u1, const f
     sample8(u1, v1, d1, s, rgba1);
 }
 
+void Texture::sample_quad_block(const f8 (&u)[4], const f8 (&v)[4], const std::array<f8, 4> (&d)[4], const Sampler& s,
+                                std::array<f8, 4> (&rgba)[4]) const {
+    if (uniform_lookup(pot_, s) && !srgb_ && lanes::sample_uniform_block(pot_levels(), u, v, d, s.mip, rgba)) return;
+    sample_quad_rows(u[0], v[0], u[1], v[1], d[0], d[1], s, rgba[0], rgba[1]);
+    sample_quad_rows(u[2], v[2], u[3], v[3], d[2], d[3], s, rgba[2], rgba[3]);
+}
+
 lanes::PotLevels Texture::pot_levels() const {
     return {texels(), &tables_, levels(), float(width()), float(height())};
 }

@@ -309,6 +309,11 @@ struct PotLevels {
 // untouched) unless all sixteen lanes take the same level(s) from the same derivatives.
 bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1);
+// Four groups' lookups (Texture::sample_quad_block), linear textures only: false (rgba
+// untouched) unless groups 0 and 1 have the same derivatives, 2 and 3 too, and all 32 lanes
+// take the same level(s).
+bool sample_uniform_block(const PotLevels& t, const f8 (&u)[4], const f8 (&v)[4], const std::array<f8, 4> (&d)[4], MipFilter mip,
+                          std::array<f8, 4> (&rgba)[4]);
 bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba);
 
 }  // namespace softraster::lanes

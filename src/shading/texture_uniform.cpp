@@ -103,20 +103,23 @@ inline i8 fixed_point(const f8& u, float side) {
 }
 
 // Linear textures: the fixed-point filter (sample_level_fixed), for G groups of eight lanes
-// whose derivatives d are the same: one group, or a row of quads' first and second rows
-// (Texture::sample_quad_rows), for which one level of detail then serves both. The work goes
-// phase by phase, all groups' texel addresses, then all their loads, then all the filtering,
-// so that a second group's loads do not queue behind the first's filter (a lookup is a long
-// chain of dependent steps; side by side, two overlap).
-template <bool Wide, int G>
-inline bool sample_uniform_linear(const PotLevels& t, const f8 (&u)[G], const f8 (&v)[G], const std::array<f8, 4>& d, MipFilter mip,
+// in D sets, each set's groups with the same derivatives d[set]: one group, a row of quads'
+// first and second rows (Texture::sample_quad_rows: one level of detail serves both), or two
+// such pairs side by side (Texture::sample_quad_block), whose levels must then agree too. The
+// work goes phase by phase, all groups' texel addresses, then all their loads, then all the
+// filtering, so that a second group's loads do not queue behind the first's filter (a lookup
+// is a long chain of dependent steps; side by side, they overlap), and one call's fixed costs
+// (the level of detail, the level's numbers, the call itself) serve all G groups.
+template <bool Wide, int G, int D>
+inline bool sample_uniform_linear(const PotLevels& t, const f8 (&u)[G], const f8 (&v)[G], const std::array<f8, 4>* const (&d)[D], MipFilter mip,
                                   std::array<f8, 4>* const (&rgba)[G]) {
+    static_assert(G % D == 0);
     using simd::to_int;
     i8 fu[G], fv[G];
     for (int g = 0; g < G; ++g) fu[g] = fixed_point<Wide>(u[g], t.w), fv[g] = fixed_point<Wide>(v[g], t.h);
     LevelPoint p[G][2];  // [group][first or second level]
     i8 texel[G][2][4];
-    UniformLevels l;
+    UniformLevels l[D], all;
     for (;;) {  // (twice only after a wrong guess, which guessed_right corrects)
         const LevelGuess guess = t_last_levels;
         const int levels = guess.two ? 2 : 1;
@@ -124,16 +127,22 @@ inline bool sample_uniform_linear(const PotLevels& t, const f8 (&u)[G], const f8
             for (int k = 0; k < levels; ++k) level_point<Wide>(t, fu[g], fv[g], guess.level + k, p[g][k]);
         for (int g = 0; g < G; ++g)
             for (int k = 0; k < levels; ++k) load_footprints<Wide>(t.texels, p[g][k].index, texel[g][k]);
-        if (!uniform_levels<Wide>(t, d, mip, l)) return false;
-        if (guessed_right(guess, l)) [[likely]] break;
+        for (int k = 0; k < D; ++k)
+            if (!uniform_levels<Wide>(t, *d[k], mip, l[k]) || l[k].level != l[0].level) return false;
+        all = l[0];
+        for (int k = 1; k < D; ++k) all.two = all.two || l[k].two;  // (a set without a second level blends it by 0: exact)
+        if (all.level + (all.two ? 1 : 0) >= 16) return false;
+        if (guessed_right(guess, all)) [[likely]] break;
     }
-    Fixed8 w;
-    if (l.two) spread<Wide>(to_int(l.weight * 256.0f) << 8, w);  // (weight in [0, 1): truncation is the floor)
+    Fixed8 w[D];
+    if (all.two)
+        for (int k = 0; k < D; ++k) spread<Wide>(to_int(l[k].weight * 256.0f) << 8, w[k]);  // (weight in [0, 1): truncation is the floor)
     for (int g = 0; g < G; ++g) {
         Fixed8 f = bilinear16<Wide>(texel[g][0], p[g][0].fx, p[g][0].fy);
-        if (l.two) {
+        if (all.two) {
             const Fixed8 f1 = bilinear16<Wide>(texel[g][1], p[g][1].fx, p[g][1].fy);
-            f = {blend16<Wide>(f.lo, f1.lo, w.lo), blend16<Wide>(f.hi, f1.hi, w.hi)};
+            const Fixed8& wg = w[g / (G / D)];
+            f = {blend16<Wide>(f.lo, f1.lo, wg.lo), blend16<Wide>(f.hi, f1.hi, wg.hi)};
         }
         unit_of_fixed8<Wide>(f, *rgba[g]);
     }
@@ -172,16 +181,33 @@ inline bool sample_uniform_srgb(const PotLevels& t, const f8& u, const f8& v, co
 
 }  // namespace
 
+// Whether two groups' derivatives are the same (the same quads'); where not, each group
+// takes its own level of detail.
+template <bool Wide>
+inline bool same_quads(const std::array<f8, 4>& d0, const std::array<f8, 4>& d1) {
+    return !simd::any((d0[0] != d1[0]) | (d0[1] != d1[1]) | (d0[2] != d1[2]) | (d0[3] != d1[3]));
+}
+
 bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) {
     // (All of it in the lambda, the CPU path's own copy: vectors compared or copied outside it
     // would be compiled without AVX, lane by lane.)
     return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() {
-        // (Not the same quads' derivatives: each group its own level of detail.)
-        if (simd::any((d0[0] != d1[0]) | (d0[1] != d1[1]) | (d0[2] != d1[2]) | (d0[3] != d1[3]))) return false;
+        if (!same_quads<Wide>(d0, d1)) return false;
         const f8 u[2] = {u0, u1}, v[2] = {v0, v1};
+        const std::array<f8, 4>* const d[1] = {&d0};
         std::array<f8, 4>* const rgba[2] = {&rgba0, &rgba1};
-        return sample_uniform_linear<Wide, 2>(t, u, v, d0, mip, rgba);
+        return sample_uniform_linear<Wide, 2, 1>(t, u, v, d, mip, rgba);
+    });
+}
+
+bool sample_uniform_block(const PotLevels& t, const f8 (&u)[4], const f8 (&v)[4], const std::array<f8, 4> (&d)[4], MipFilter mip,
+                          std::array<f8, 4> (&rgba)[4]) {
+    return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() {
+        if (!same_quads<Wide>(d[0], d[1]) || !same_quads<Wide>(d[2], d[3])) return false;
+        const std::array<f8, 4>* const pairs[2] = {&d[0], &d[2]};
+        std::array<f8, 4>* const out[4] = {&rgba[0], &rgba[1], &rgba[2], &rgba[3]};
+        return sample_uniform_linear<Wide, 4, 2>(t, u, v, pairs, mip, out);
     });
 }
 
@@ -189,8 +215,9 @@ bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, con
     if (srgb) return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, mip, rgba); });
     return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() {
         const f8 uu[1] = {u}, vv[1] = {v};
+        const std::array<f8, 4>* const dd[1] = {&d};
         std::array<f8, 4>* const out[1] = {&rgba};
-        return sample_uniform_linear<Wide, 1>(t, uu, vv, d, mip, out);
+        return sample_uniform_linear<Wide, 1, 1>(t, uu, vv, dd, mip, out);
     });
 }
 

@@ -56,11 +56,15 @@ TEST(FragmentQueue, SamePictureAsShadingEachTriangle) {
                 if (queue_runs) {
                     ASSERT_GT(queued_calls.load(), 0u);
                     EXPECT_GT(double(queued.shaded) / double(queued_calls.load()), 6.5) << "samples " << samples;
-                    if (samples == 1) EXPECT_LT(double(plain.shaded) / double(plain_calls.load()), 6.5);
+                    if (samples == 1) {
+                        EXPECT_LT(double(plain.shaded) / double(plain_calls.load()), 6.5);
+                    }
                 } else {
                     EXPECT_EQ(queued_calls.load(), plain_calls.load()) << "samples " << samples;
                 }
-                if (samples != 1) EXPECT_EQ(plain_calls.load(), 0u);
+                if (samples != 1) {
+                    EXPECT_EQ(plain_calls.load(), 0u);
+                }
                 EXPECT_TRUE(queued.color == plain.color) << "color differs, samples " << samples << " func " << int(c.func);
                 EXPECT_TRUE(queued.depth == plain.depth) << "depth differs, samples " << samples << " func " << int(c.func);
                 EXPECT_EQ(queued.shaded, plain.shaded);

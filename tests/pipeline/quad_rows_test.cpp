@@ -1,5 +1,6 @@
 // The tile loop shades a textured surface's groups two rows at a time (a row of 2x2 quads'
-// first and second rows, fragment_quad_rows; tile_back_end.h). That must not change the
+// first and second rows, fragment_quad_rows; tile_back_end.h), and two such pairs side by
+// side at a time where it can (fragment_quad_block). That must not change the
 // picture: random textured triangles, drawn by SurfaceShader and by the same shader with
 // fragment_quad_rows taken away (each row's groups on their own), give byte-identical color
 // and depth, opaque and blended, for several depth functions and texture filters. The pairs
@@ -33,6 +34,7 @@ struct RowByRow : S {
 constexpr Shading kModel = Shading::Lambert;  // (lit, yet not so bright that the colors clip)
 using Paired = SurfaceShader<kModel, true, true>;  // what record_surface_draw draws colored textured meshes with
 static_assert(QuadRowShader<Paired>);
+static_assert(QuadBlockShader<Paired>);  // (and two pairs side by side, fragment_quad_block: the pictures below cover both)
 static_assert(!QuadRowShader<RowByRow<Paired>>);
 static_assert(!QuadRowShader<SurfaceShader<Shading::Unlit, false, false>>);  // (untextured: nothing to share)
 

@@ -243,6 +243,23 @@ void expect_batch_equals_scalar(const SurfaceUniforms& u) {
                     ASSERT_EQ(std::bit_cast<uint32_t>(rows[0][ch][l]), std::bit_cast<uint32_t>(batch[ch][l])) << "model " << int(M) << " first row";
                     ASSERT_EQ(std::bit_cast<uint32_t>(rows[1][ch][l]), std::bit_cast<uint32_t>(alone[ch][l])) << "model " << int(M) << " second row";
                 }
+            if constexpr (QuadBlockShader<S>) {  // and two such pairs: the first as above, the second as its own pair gives it
+                std::array<simd::f8, N> next[2];
+                for (auto& g : next)
+                    for (int l = 0; l < simd::kLanes; ++l)
+                        for (auto& v : g) v[l] = val(rng);
+                for (size_t k = 0; k < 4; ++k) next[1][size_t(S::Varyings::kUvDerivativesAt) + k] = next[0][size_t(S::Varyings::kUvDerivativesAt) + k];
+                const std::array<simd::f8, N> block_in[4] = {in, below, next[0], next[1]};
+                const simd::f8 zs[4] = {z, z + 0.1f, z + 0.2f, z + 0.3f};
+                std::array<simd::f8, 4> block[4], pair[2];
+                shader.fragment_quad_block(block_in, zs, true, block);
+                shader.fragment_quad_rows(next[0], next[1], zs[2], zs[3], true, pair[0], pair[1]);
+                const std::array<simd::f8, 4>* want[4] = {&rows[0], &rows[1], &pair[0], &pair[1]};
+                for (size_t g = 0; g < 4; ++g)
+                    for (int l = 0; l < simd::kLanes; ++l)
+                        for (size_t ch = 0; ch < 4; ++ch)
+                            ASSERT_EQ(std::bit_cast<uint32_t>(block[g][ch][l]), std::bit_cast<uint32_t>((*want[g])[ch][l])) << "model " << int(M) << " group " << g;
+            }
         }
         for (int l = 0; l < simd::kLanes; ++l) {
             std::array<float, size_t(N)> lane;

@@ -438,6 +438,51 @@ TEST(Texture, UniformLookupsAfterOtherLevelsEqualOneAtATime) {
     simd::use_generic_path(false);
 }
 
+// Four groups at once (sample_quad_block: two neighbouring pairs of a row of quads) give what
+// each gives alone (sample8): one level of detail where both pairs take the same levels, each
+// pair its own where they do not, each group its own where a pair's rows' derivatives differ.
+TEST(Texture, QuadBlockLookupsEqualEightAtATime) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> coord(-40.0f, 40.0f), log_scale(-14.0f, 3.0f), unit(-1.0f, 1.0f), near(-0.02f, 0.02f);
+    for (const auto& [w, h, color] : {std::tuple{64, 64, ColorSpace::Linear}, std::tuple{128, 8, ColorSpace::Linear}, std::tuple{1, 1, ColorSpace::Linear},
+                                      std::tuple{48, 32, ColorSpace::Linear}, std::tuple{64, 64, ColorSpace::Srgb}}) {
+        const Texture t = pattern_texture(w, h, color);
+        for (bool generic : {false, true}) {
+            simd::use_generic_path(generic);
+            for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear})
+                for (Wrap wrap : {Wrap::Repeat, Wrap::Clamp})
+                    for (int trial = 0; trial < 150; ++trial) {
+                        Sampler s = Sampler::plain(Filter::Bilinear, wrap);
+                        s.mip = mip;
+                        simd::f8 u[4], v[4];
+                        std::array<simd::f8, 4> d[4];
+                        const float scale = std::exp2(log_scale(rng));
+                        // (the second pair: mostly the same scale, as neighbours are; now and then a level or more apart)
+                        const float scale2 = trial % 4 == 0 ? scale * std::exp2(2.0f * unit(rng)) : scale;
+                        for (int l = 0; l < simd::kLanes; ++l) {
+                            u[0][l] = coord(rng), v[0][l] = coord(rng), u[1][l] = u[0][l] + near(rng), v[1][l] = v[0][l] + near(rng);
+                            u[2][l] = u[0][l] + 8.0f * scale, v[2][l] = v[0][l] + near(rng), u[3][l] = u[2][l] + near(rng), v[3][l] = v[2][l] + near(rng);
+                            for (size_t k = 0; k < 4; ++k) {
+                                const float slant = trial % 3 ? 1.0f : unit(rng);
+                                d[0][k][l] = scale * slant, d[2][k][l] = scale2 * slant;
+                            }
+                        }
+                        d[1] = d[0], d[3] = d[2];
+                        if (trial % 5 == 0) d[3][1] = d[3][1] * 1.5f;  // (not the same quads)
+                        std::array<simd::f8, 4> got[4], want[4];
+                        t.sample_quad_block(u, v, d, s, got);
+                        for (int g = 0; g < 4; ++g) t.sample8(u[g], v[g], d[g], s, want[g]);
+                        for (int g = 0; g < 4; ++g)
+                            for (int l = 0; l < simd::kLanes; ++l)
+                                for (size_t k = 0; k < 4; ++k)
+                                    ASSERT_EQ(std::bit_cast<uint32_t>(got[g][k][l]), std::bit_cast<uint32_t>(want[g][k][l]))
+                                        << w << "x" << h << " trial " << trial << " group " << g << " lane " << l << (generic ? " generic" : "");
+                    }
+        }
+        simd::use_generic_path(false);
+    }
+}
+
 // Two groups at once (sample_quad_rows: a row of quads' two rows) give what each gives alone
 // (sample8): sharing the level of detail where their derivatives are the same (the quads'),
 // each its own where they differ; linear and sRGB, power-of-two sides or not, any sampler.

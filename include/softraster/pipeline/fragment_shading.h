@@ -33,6 +33,15 @@ concept QuadRowShader = BatchShader<S> && requires(const S s, const std::array<s
     s.fragment_quad_rows(v, v, z, z, true, color, color);
 };
 
+// And fragment_quad_block(v, z, front_facing, color), v, z and color arrays of four: two
+// neighbouring pairs as fragment_quad_rows takes them (groups 0 and 1 the first pair's rows,
+// 2 and 3 the next eight pixels' to the right), where four together are cheaper still.
+template <class S>
+concept QuadBlockShader = QuadRowShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>> (&v)[4],
+                                                       const simd::f8 (&z)[4], std::array<simd::f8, 4> (&color)[4]) {
+    s.fragment_quad_block(v, z, true, color);
+};
+
 // A shader that never discards and has no side effects says so with
 // `static constexpr bool kPure = true;`: its fragments' depth can be written before they
 // are shaded, and they can be shaded in any order (fragment_queue.h,
@@ -62,6 +71,11 @@ template <QuadRowShader S>
                                                       std::array<simd::f8, 4>& rgba1) {
     simd::on_best_path([&]<bool>() { shader.fragment_quad_rows(v0, v1, z0, z1, front_facing, rgba0, rgba1); });
 }
+template <QuadBlockShader S>
+[[gnu::noinline]] void fragment_quad_block_out_of_line(const S& shader, const std::array<simd::f8, kVaryingCount<typename S::Varyings>> (&v)[4],
+                                                       const simd::f8 (&z)[4], bool front_facing, std::array<simd::f8, 4> (&rgba)[4]) {
+    simd::on_best_path([&]<bool>() { shader.fragment_quad_block(v, z, front_facing, rgba); });
+}
 template <Shader S>
 [[gnu::noinline]] bool fragment_out_of_line(const S& shader, const typename S::Varyings& v, const FragCoord& frag, glm::vec4& color) {
     return simd::on_best_path([&]<bool>() { return shader.fragment(v, frag, color); });
@@ -80,6 +94,12 @@ inline void run_fragment_quad_rows(const S& shader, const std::array<simd::f8, k
                                    bool front_facing, std::array<simd::f8, 4>& rgba0, std::array<simd::f8, 4>& rgba1) {
     if constexpr (OutOfLineShader<S>) fragment_quad_rows_out_of_line(shader, v0, v1, z0, z1, front_facing, rgba0, rgba1);
     else shader.fragment_quad_rows(v0, v1, z0, z1, front_facing, rgba0, rgba1);
+}
+template <QuadBlockShader S>
+inline void run_fragment_quad_block(const S& shader, const std::array<simd::f8, kVaryingCount<typename S::Varyings>> (&v)[4],
+                                    const simd::f8 (&z)[4], bool front_facing, std::array<simd::f8, 4> (&rgba)[4]) {
+    if constexpr (OutOfLineShader<S>) fragment_quad_block_out_of_line(shader, v, z, front_facing, rgba);
+    else shader.fragment_quad_block(v, z, front_facing, rgba);
 }
 template <Shader S>
 inline bool run_fragment(const S& shader, const typename S::Varyings& v, const FragCoord& frag, glm::vec4& color) {

@@ -262,7 +262,10 @@ struct TileBackEnd {
 
     // The groups of rows y (a quads' first) and y + 1, spans [begin0, end0) and [begin1,
     // end1): where both rows of a group have pixels that pass the depth test, shaded with one
-    // call (QuadRowShader); else each row's on its own.
+    // call (QuadRowShader), and two such neighbouring groups with one call where the shader
+    // takes four (QuadBlockShader: the first is held until the next comes); else each row's
+    // on its own. Each pixel's depth test, color and merge are its own, so the order between
+    // the groups changes nothing.
     uint64_t draw_quad_rows(const TriangleSetup<N>& t, int y, int begin0, int end0, int begin1, int end1) const
         requires(QuadRowShader<S> && DerivativeShader<S>) {
         using namespace simd;
@@ -271,6 +274,26 @@ struct TileBackEnd {
         const f8 j0 = splat(float(y - t.origin_y)), j1 = splat(float(y + 1 - t.origin_y));
         float* depth_rows[2] = {fb.depth_data() + fb.sample_index(0, y), fb.depth_data() + fb.sample_index(0, y + 1)};
         Rgba8* color_rows[2] = {fb.color_data() + fb.sample_index(0, y), fb.color_data() + fb.sample_index(0, y + 1)};
+        // A group whose two rows both have pixels to shade: its x, lane offsets, depths and
+        // passing lanes per row. (The lanes are whole quads: x is a multiple of 8 and y even;
+        // draw_groups pairs no triangle whose varyings are constant.)
+        struct Pair {
+            int x;
+            f8 i, z[2];
+            i8 pass[2];
+        };
+        auto merge = [&](const Pair& p, const std::array<f8, 4>* rgba) {  // (rgba[0], rgba[1]: its rows)
+            for (int r = 0; r < 2; ++r) blend_group<Blended>(blend, color_rows[r], p.x, width, p.pass[r], rgba[r]);
+        };
+        auto shade_pair = [&](const Pair& p) {
+            std::array<f8, N> v[2];
+            interpolate_quad_row_pair<S>(t, p.i, j0, v[0], v[1]);
+            std::array<f8, 4> rgba[2];
+            run_fragment_quad_rows(shader, v[0], v[1], p.z[0], p.z[1], t.front_facing, rgba[0], rgba[1]);
+            merge(p, rgba);
+        };
+        Pair held{};
+        bool holding = false;
         for_each_group(std::min(begin0, begin1), std::max(end0, end1), [&](int x, i8) {
             const i8 px = kLaneIndex + x;
             const i8 covered[2] = {(px >= begin0) & (px < end0), (px >= begin1) & (px < end1)};
@@ -279,20 +302,36 @@ struct TileBackEnd {
             i8 pass[2];
             for (int r = 0; r < 2; ++r) pass[r] = any(covered[r]) ? depth.test_group(depth_rows[r], x, width, z[r], covered[r]) : splat_i(0);
             shaded += unsigned(__builtin_popcount(bits(pass[0]))) + unsigned(__builtin_popcount(bits(pass[1])));
-            std::array<f8, 4> rgba[2];
             if (any(pass[0]) && any(pass[1])) {
-                // (The lanes are whole quads: x is a multiple of 8 and y even; draw_groups
-                // pairs no triangle whose varyings are constant.)
-                std::array<f8, N> v[2];
-                interpolate_quad_row_pair<S>(t, i, j0, v[0], v[1]);
-                run_fragment_quad_rows(shader, v[0], v[1], z[0], z[1], t.front_facing, rgba[0], rgba[1]);
-            } else {
-                for (int r = 0; r < 2; ++r)
-                    if (any(pass[r])) run_fragment_batch(shader, interpolate_varyings<S, kConstant>(t, i, r ? j1 : j0), z[r], t.front_facing, rgba[r]);
+                if constexpr (QuadBlockShader<S>) {
+                    if (!holding || held.x != x - kLanes) {  // (a held group not next to this one goes alone)
+                        if (holding) shade_pair(held);
+                        held = {x, i, {z[0], z[1]}, {pass[0], pass[1]}}, holding = true;
+                        return;
+                    }
+                    holding = false;
+                    std::array<f8, N> v[4];
+                    interpolate_quad_row_pair<S>(t, held.i, j0, v[0], v[1]);
+                    interpolate_quad_row_pair<S>(t, i, j0, v[2], v[3]);
+                    const f8 zs[4] = {held.z[0], held.z[1], z[0], z[1]};
+                    std::array<f8, 4> rgba[4];
+                    run_fragment_quad_block(shader, v, zs, t.front_facing, rgba);
+                    merge(held, &rgba[0]);
+                    for (int r = 0; r < 2; ++r) blend_group<Blended>(blend, color_rows[r], x, width, pass[r], rgba[2 + r]);
+                    return;
+                } else {
+                    shade_pair({x, i, {z[0], z[1]}, {pass[0], pass[1]}});
+                    return;
+                }
             }
+            if (holding) shade_pair(held), holding = false;
+            std::array<f8, 4> rgba[2];
+            for (int r = 0; r < 2; ++r)
+                if (any(pass[r])) run_fragment_batch(shader, interpolate_varyings<S, kConstant>(t, i, r ? j1 : j0), z[r], t.front_facing, rgba[r]);
             for (int r = 0; r < 2; ++r)
                 if (any(pass[r])) blend_group<Blended>(blend, color_rows[r], x, width, pass[r], rgba[r]);
         });
+        if (holding) shade_pair(held);
         return shaded;
     }
 
