@@ -438,12 +438,12 @@ TEST(Texture, UniformLookupsAfterOtherLevelsEqualOneAtATime) {
     simd::use_generic_path(false);
 }
 
-// Four groups at once (sample_quad_block: two neighbouring pairs of a row of quads) give what
-// each gives alone (sample8): one level of detail where both pairs take the same levels, each
-// pair its own where they do not, each group its own where a pair's rows' derivatives differ.
-TEST(Texture, QuadBlockLookupsEqualEightAtATime) {
-    std::mt19937 rng(17);
-    std::uniform_real_distribution<float> coord(-40.0f, 40.0f), log_scale(-14.0f, 3.0f), unit(-1.0f, 1.0f), near(-0.02f, 0.02f);
+namespace {
+// The cases of the tests of lookups in groups (sample_quad_rows, sample_quad_block): f(texture,
+// sampler, trial, what) for linear and sRGB textures, power-of-two sides or not, on both CPU
+// paths, each mip filter and wrap mode, 150 trials each; it stops at the first failure.
+template <class F>
+void for_each_grouped_lookup_case(F&& f) {
     for (const auto& [w, h, color] : {std::tuple{64, 64, ColorSpace::Linear}, std::tuple{128, 8, ColorSpace::Linear}, std::tuple{1, 1, ColorSpace::Linear},
                                       std::tuple{48, 32, ColorSpace::Linear}, std::tuple{64, 64, ColorSpace::Srgb}}) {
         const Texture t = pattern_texture(w, h, color);
@@ -454,33 +454,47 @@ TEST(Texture, QuadBlockLookupsEqualEightAtATime) {
                     for (int trial = 0; trial < 150; ++trial) {
                         Sampler s = Sampler::plain(Filter::Bilinear, wrap);
                         s.mip = mip;
-                        simd::f8 u[4], v[4];
-                        std::array<simd::f8, 4> d[4];
-                        const float scale = std::exp2(log_scale(rng));
-                        // (the second pair: mostly the same scale, as neighbours are; now and then a level or more apart)
-                        const float scale2 = trial % 4 == 0 ? scale * std::exp2(2.0f * unit(rng)) : scale;
-                        for (int l = 0; l < simd::kLanes; ++l) {
-                            u[0][l] = coord(rng), v[0][l] = coord(rng), u[1][l] = u[0][l] + near(rng), v[1][l] = v[0][l] + near(rng);
-                            u[2][l] = u[0][l] + 8.0f * scale, v[2][l] = v[0][l] + near(rng), u[3][l] = u[2][l] + near(rng), v[3][l] = v[2][l] + near(rng);
-                            for (size_t k = 0; k < 4; ++k) {
-                                const float slant = trial % 3 ? 1.0f : unit(rng);
-                                d[0][k][l] = scale * slant, d[2][k][l] = scale2 * slant;
-                            }
-                        }
-                        d[1] = d[0], d[3] = d[2];
-                        if (trial % 5 == 0) d[3][1] = d[3][1] * 1.5f;  // (not the same quads)
-                        std::array<simd::f8, 4> got[4], want[4];
-                        t.sample_quad_block(u, v, d, s, got);
-                        for (int g = 0; g < 4; ++g) t.sample8(u[g], v[g], d[g], s, want[g]);
-                        for (int g = 0; g < 4; ++g)
-                            for (int l = 0; l < simd::kLanes; ++l)
-                                for (size_t k = 0; k < 4; ++k)
-                                    ASSERT_EQ(std::bit_cast<uint32_t>(got[g][k][l]), std::bit_cast<uint32_t>(want[g][k][l]))
-                                        << w << "x" << h << " trial " << trial << " group " << g << " lane " << l << (generic ? " generic" : "");
+                        f(t, s, trial, std::to_string(w) + "x" + std::to_string(h) + " trial " + std::to_string(trial) + (generic ? " generic" : ""));
+                        if (::testing::Test::HasFatalFailure()) return simd::use_generic_path(false);
                     }
         }
         simd::use_generic_path(false);
     }
+}
+// got and want the same bits in every lane and channel.
+void expect_same_lookups(const std::array<simd::f8, 4>& got, const std::array<simd::f8, 4>& want, const std::string& what) {
+    for (int l = 0; l < simd::kLanes; ++l)
+        for (size_t k = 0; k < 4; ++k) ASSERT_EQ(std::bit_cast<uint32_t>(got[k][l]), std::bit_cast<uint32_t>(want[k][l])) << what << " lane " << l;
+}
+}  // namespace
+
+// Four groups at once (sample_quad_block: two neighbouring pairs of a row of quads) give what
+// each gives alone (sample8): one level of detail where both pairs take the same levels, each
+// pair its own where they do not, each group its own where a pair's rows' derivatives differ.
+TEST(Texture, QuadBlockLookupsEqualEightAtATime) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> coord(-40.0f, 40.0f), log_scale(-14.0f, 3.0f), unit(-1.0f, 1.0f), near(-0.02f, 0.02f);
+    for_each_grouped_lookup_case([&](const Texture& t, const Sampler& s, int trial, const std::string& what) {
+        simd::f8 u[4], v[4];
+        std::array<simd::f8, 4> d[4];
+        const float scale = std::exp2(log_scale(rng));
+        // (the second pair: mostly the same scale, as neighbours are; now and then a level or more apart)
+        const float scale2 = trial % 4 == 0 ? scale * std::exp2(2.0f * unit(rng)) : scale;
+        for (int l = 0; l < simd::kLanes; ++l) {
+            u[0][l] = coord(rng), v[0][l] = coord(rng), u[1][l] = u[0][l] + near(rng), v[1][l] = v[0][l] + near(rng);
+            u[2][l] = u[0][l] + 8.0f * scale, v[2][l] = v[0][l] + near(rng), u[3][l] = u[2][l] + near(rng), v[3][l] = v[2][l] + near(rng);
+            for (size_t k = 0; k < 4; ++k) {
+                const float slant = trial % 3 ? 1.0f : unit(rng);
+                d[0][k][l] = scale * slant, d[2][k][l] = scale2 * slant;
+            }
+        }
+        d[1] = d[0], d[3] = d[2];
+        if (trial % 5 == 0) d[3][1] = d[3][1] * 1.5f;  // (not the same quads)
+        std::array<simd::f8, 4> got[4], want[4];
+        t.sample_quad_block(u, v, d, s, got);
+        for (int g = 0; g < 4; ++g) t.sample8(u[g], v[g], d[g], s, want[g]);
+        for (int g = 0; g < 4; ++g) expect_same_lookups(got[g], want[g], what + " group " + std::to_string(g));
+    });
 }
 
 // Two groups at once (sample_quad_rows: a row of quads' two rows) give what each gives alone
@@ -489,38 +503,23 @@ TEST(Texture, QuadBlockLookupsEqualEightAtATime) {
 TEST(Texture, QuadRowLookupsEqualEightAtATime) {
     std::mt19937 rng(13);
     std::uniform_real_distribution<float> coord(-40.0f, 40.0f), log_scale(-14.0f, 3.0f), unit(-1.0f, 1.0f), near(-0.02f, 0.02f);
-    for (const auto& [w, h, color] : {std::tuple{64, 64, ColorSpace::Linear}, std::tuple{128, 8, ColorSpace::Linear}, std::tuple{1, 1, ColorSpace::Linear},
-                                      std::tuple{48, 32, ColorSpace::Linear}, std::tuple{64, 64, ColorSpace::Srgb}}) {
-        const Texture t = pattern_texture(w, h, color);
-        for (bool generic : {false, true}) {
-            simd::use_generic_path(generic);
-            for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear})
-                for (Wrap wrap : {Wrap::Repeat, Wrap::Clamp})
-                    for (int trial = 0; trial < 150; ++trial) {
-                        Sampler s = Sampler::plain(Filter::Bilinear, wrap);
-                        s.mip = mip;
-                        simd::f8 u0, v0, u1, v1;
-                        std::array<simd::f8, 4> d0, d1;
-                        const float scale = std::exp2(log_scale(rng));
-                        for (int l = 0; l < simd::kLanes; ++l) {
-                            u0[l] = coord(rng), v0[l] = coord(rng), u1[l] = u0[l] + near(rng), v1[l] = v0[l] + near(rng);
-                            for (size_t k = 0; k < 4; ++k) d0[k][l] = scale * (trial % 3 ? 1.0f : unit(rng));
-                        }
-                        d1 = d0;
-                        if (trial % 5 == 0) d1[1] = d1[1] * 1.5f;  // (not the same quads)
-                        std::array<simd::f8, 4> got0, got1, want0, want1;
-                        t.sample_quad_rows(u0, v0, u1, v1, d0, d1, s, got0, got1);
-                        t.sample8(u0, v0, d0, s, want0);
-                        t.sample8(u1, v1, d1, s, want1);
-                        for (int l = 0; l < simd::kLanes; ++l)
-                            for (size_t k = 0; k < 4; ++k) {
-                                ASSERT_EQ(std::bit_cast<uint32_t>(got0[k][l]), std::bit_cast<uint32_t>(want0[k][l])) << w << "x" << h << " trial " << trial << " lane " << l;
-                                ASSERT_EQ(std::bit_cast<uint32_t>(got1[k][l]), std::bit_cast<uint32_t>(want1[k][l])) << w << "x" << h << " trial " << trial << " lane " << l;
-                            }
-                    }
+    for_each_grouped_lookup_case([&](const Texture& t, const Sampler& s, int trial, const std::string& what) {
+        simd::f8 u0, v0, u1, v1;
+        std::array<simd::f8, 4> d0, d1;
+        const float scale = std::exp2(log_scale(rng));
+        for (int l = 0; l < simd::kLanes; ++l) {
+            u0[l] = coord(rng), v0[l] = coord(rng), u1[l] = u0[l] + near(rng), v1[l] = v0[l] + near(rng);
+            for (size_t k = 0; k < 4; ++k) d0[k][l] = scale * (trial % 3 ? 1.0f : unit(rng));
         }
-        simd::use_generic_path(false);
-    }
+        d1 = d0;
+        if (trial % 5 == 0) d1[1] = d1[1] * 1.5f;  // (not the same quads)
+        std::array<simd::f8, 4> got0, got1, want0, want1;
+        t.sample_quad_rows(u0, v0, u1, v1, d0, d1, s, got0, got1);
+        t.sample8(u0, v0, d0, s, want0);
+        t.sample8(u1, v1, d1, s, want1);
+        expect_same_lookups(got0, want0, what + " first row");
+        expect_same_lookups(got1, want1, what + " second row");
+    });
 }
 
 // Textures of the size of real assets' (a megapixel, one side not a power of two): every
