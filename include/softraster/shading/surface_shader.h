@@ -281,9 +281,11 @@ struct SurfaceShader {
     }
 
     // ... and for two such pairs side by side (fragment_shading.h), whose lookups go together
-    // too (Texture::sample_quad_block).
+    // too (Texture::sample_quad_block). Not for PBR: its four inlined shadings made its draw
+    // code the slowest file of the build by a quarter more, and its frame no faster
+    // (docs/performance.md, "Four groups a call").
     void fragment_quad_block(const Batch (&in)[4], const simd::f8 (&z)[4], bool, std::array<simd::f8, 4> (&out)[4]) const
-        requires(Varyings::kUv) {
+        requires(Varyings::kUv && Model != Shading::Pbr) {
         std::array<simd::f8, 4> tex[4];
         const bool textured = Model != Shading::Pbr || u->texture;
         if (textured) {
