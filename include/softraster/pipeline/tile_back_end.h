@@ -282,15 +282,15 @@ struct TileBackEnd {
             f8 i, z[2];
             i8 pass[2];
         };
-        auto merge = [&](const Pair& p, const std::array<f8, 4>* rgba) {  // (rgba[0], rgba[1]: its rows)
-            for (int r = 0; r < 2; ++r) blend_group<Blended>(blend, color_rows[r], p.x, width, p.pass[r], rgba[r]);
+        auto merge = [&](int x, const i8* pass, const std::array<f8, 4>* rgba) {  // (pass[r], rgba[r]: row r's)
+            for (int r = 0; r < 2; ++r) blend_group<Blended>(blend, color_rows[r], x, width, pass[r], rgba[r]);
         };
         auto shade_pair = [&](const Pair& p) {
             std::array<f8, N> v[2];
             interpolate_quad_row_pair<S>(t, p.i, j0, v[0], v[1]);
             std::array<f8, 4> rgba[2];
             run_fragment_quad_rows(shader, v[0], v[1], p.z[0], p.z[1], t.front_facing, rgba[0], rgba[1]);
-            merge(p, rgba);
+            merge(p.x, p.pass, rgba);
         };
         Pair held{};
         bool holding = false;
@@ -316,8 +316,8 @@ struct TileBackEnd {
                     const f8 zs[4] = {held.z[0], held.z[1], z[0], z[1]};
                     std::array<f8, 4> rgba[4];
                     run_fragment_quad_block(shader, v, zs, t.front_facing, rgba);
-                    merge(held, &rgba[0]);
-                    for (int r = 0; r < 2; ++r) blend_group<Blended>(blend, color_rows[r], x, width, pass[r], rgba[2 + r]);
+                    merge(held.x, held.pass, &rgba[0]);
+                    merge(x, pass, &rgba[2]);
                     return;
                 } else {
                     shade_pair({x, i, {z[0], z[1]}, {pass[0], pass[1]}});

@@ -286,15 +286,12 @@ struct SurfaceShader {
     // (docs/performance.md, "Four groups a call").
     void fragment_quad_block(const Batch (&in)[4], const simd::f8 (&z)[4], bool, std::array<simd::f8, 4> (&out)[4]) const
         requires(Varyings::kUv && Model != Shading::Pbr) {
-        std::array<simd::f8, 4> tex[4];
-        const bool textured = Model != Shading::Pbr || u->texture;
-        if (textured) {
-            const simd::f8 uu[4] = {in[0][Varyings::kUvAt], in[1][Varyings::kUvAt], in[2][Varyings::kUvAt], in[3][Varyings::kUvAt]};
-            const simd::f8 vv[4] = {in[0][Varyings::kUvAt + 1], in[1][Varyings::kUvAt + 1], in[2][Varyings::kUvAt + 1], in[3][Varyings::kUvAt + 1]};
-            const std::array<simd::f8, 4> d[4] = {uv_derivatives(in[0]), uv_derivatives(in[1]), uv_derivatives(in[2]), uv_derivatives(in[3])};
-            u->texture->sample_quad_block(uu, vv, d, u->sampler, tex);
-        }
-        for (size_t g = 0; g < 4; ++g) shade_batch(in[g], z[g], textured ? &tex[g] : nullptr, out[g]);
+        std::array<simd::f8, 4> tex[4];  // (not PBR: the texture is always there)
+        const simd::f8 uu[4] = {in[0][Varyings::kUvAt], in[1][Varyings::kUvAt], in[2][Varyings::kUvAt], in[3][Varyings::kUvAt]};
+        const simd::f8 vv[4] = {in[0][Varyings::kUvAt + 1], in[1][Varyings::kUvAt + 1], in[2][Varyings::kUvAt + 1], in[3][Varyings::kUvAt + 1]};
+        const std::array<simd::f8, 4> d[4] = {uv_derivatives(in[0]), uv_derivatives(in[1]), uv_derivatives(in[2]), uv_derivatives(in[3])};
+        u->texture->sample_quad_block(uu, vv, d, u->sampler, tex);
+        for (size_t g = 0; g < 4; ++g) shade_batch(in[g], z[g], &tex[g], out[g]);
     }
 
 private:
