@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
+#include <stdexcept>
 
 namespace softraster {
 namespace {
@@ -9,6 +11,24 @@ namespace {
 // How long an idle worker watches for the next loop before it sleeps, and how long a loop's
 // caller watches for its workers to finish before it sleeps (see worker_pool.h).
 constexpr auto kWatch = std::chrono::microseconds(200);
+
+uint64_t pack(uint64_t begin, uint64_t end) { return begin << 32 | end; }
+uint64_t begin_of(uint64_t run) { return run >> 32; }
+uint64_t end_of(uint64_t run) { return run & 0xffffffffu; }
+
+// Claims one index of a share, its first (front) or its last; false if it has none left.
+bool claim(std::atomic<uint64_t>& share, bool front, size_t& index) {
+    uint64_t run = share.load(std::memory_order_relaxed);
+    for (;;) {
+        const uint64_t b = begin_of(run), e = end_of(run);
+        if (b >= e) return false;
+        const uint64_t rest = front ? pack(b + 1, e) : pack(b, e - 1);
+        if (share.compare_exchange_weak(run, rest, std::memory_order_relaxed)) {
+            index = size_t(front ? b : e - 1);
+            return true;
+        }
+    }
+}
 
 inline void cpu_relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -37,6 +57,7 @@ void watch_then_sleep(std::mutex& mutex, std::condition_variable& cv, F&& done) 
 
 WorkerPool::WorkerPool(unsigned threads) {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    shares_ = std::make_unique<Share[]>(threads);
     for (unsigned t = 1; t < threads; ++t) workers_.emplace_back([this, t] { worker_main(t); });
 }
 
@@ -50,8 +71,23 @@ WorkerPool::~WorkerPool() {
 }
 
 void WorkerPool::run_items(unsigned thread) {
-    for (size_t i = next_.fetch_add(1, std::memory_order_relaxed); i < count_; i = next_.fetch_add(1, std::memory_order_relaxed))
-        (*job_)(i, thread);
+    size_t i;
+    while (claim(shares_[thread].run, /*front=*/true, i)) (*job_)(i, thread);
+    while (steal(i)) (*job_)(i, thread);
+}
+
+bool WorkerPool::steal(size_t& index) {
+    for (;;) {
+        Share* fullest = nullptr;
+        uint64_t most = 0;
+        for (unsigned t = 0; t < size(); ++t) {
+            const uint64_t run = shares_[t].run.load(std::memory_order_relaxed);
+            const uint64_t left = end_of(run) > begin_of(run) ? end_of(run) - begin_of(run) : 0;
+            if (left > most) fullest = &shares_[t], most = left;
+        }
+        if (!fullest) return false;  // (shares only shrink: nothing is left for anyone)
+        if (claim(fullest->run, /*front=*/false, index)) return true;
+    }
 }
 
 bool WorkerPool::wait_for_loop(uint64_t seen) {
@@ -82,10 +118,11 @@ void WorkerPool::parallel_for(size_t count, const std::function<void(size_t, uns
         for (size_t i = 0; i < count; ++i) fn(i, 0);
         return;
     }
+    if (count > std::numeric_limits<uint32_t>::max()) throw std::length_error("WorkerPool::parallel_for: 2^32 items or more");
     job_ = &fn;
-    count_ = count;
-    next_.store(0, std::memory_order_relaxed);
-    open_.store(true);
+    const uint64_t n = size();
+    for (uint64_t t = 0; t < n; ++t) shares_[t].run.store(pack(count * t / n, count * (t + 1) / n), std::memory_order_relaxed);
+    open_.store(true);  // (a worker that sees the loop open sees its shares)
     {
         std::lock_guard lock(mutex_);  // (a worker going to sleep sees the new generation or is woken)
         generation_.fetch_add(1);

@@ -1,7 +1,11 @@
-// A fixed set of worker threads that run parallel loops: the calling thread takes part, and
-// indices are handed out one at a time from an atomic counter (dynamic scheduling), so a
-// slow item does not hold up the others. Used by the front end (chunks of primitives) and
-// the back end (screen tiles).
+// A fixed set of worker threads that run parallel loops: the calling thread takes part.
+// Each thread starts on a share of its own, a contiguous run of the indices, and takes them
+// in order; a thread whose share is done takes the last indices of the fullest share left
+// (work stealing), so a slow item does not hold up the others. Neighbouring items thus run
+// on one core one after another: the back end's screen tiles side by side, whose
+// framebuffer rows and texels lie next to each other in memory, and the front end's chunks
+// of a mesh. Handing out indices one at a time from one shared counter interleaved the
+// threads' tiles instead (docs/performance.md, "Tiles in shares").
 //
 // A frame is a few loops in quick succession (vertices, binning, tiles; and per shadow
 // map), so an idle worker first watches for the next loop for a while, and sleeps only
@@ -13,6 +17,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -30,20 +35,26 @@ public:
     unsigned size() const { return unsigned(workers_.size()) + 1; }
 
     // Calls fn(index, thread) for every index in [0, count), thread in [0, size()); returns
-    // when all are done. Not reentrant.
+    // when all are done. count is below 2^32. Not reentrant.
     void parallel_for(size_t count, const std::function<void(size_t, unsigned)>& fn);
 
 private:
     void worker_main(unsigned thread);
     void run_items(unsigned thread);
+    bool steal(size_t& index);  // from the back of the fullest share; false: all are done
     bool wait_for_loop(uint64_t seen);  // false: the pool is stopping
 
     std::vector<std::thread> workers_;
     std::mutex mutex_;  // guards sleeping and waking only
     std::condition_variable wake_, done_;
     const std::function<void(size_t, unsigned)>* job_ = nullptr;
-    size_t count_ = 0;
-    std::atomic<size_t> next_{0};
+    // A thread's share of the current loop, the indices [begin, end) packed as begin << 32 |
+    // end, so that its owner (from the front) and thieves (from the back) claim an index
+    // with one compare-and-swap. One cache line each: the owner claims at every item.
+    struct alignas(64) Share {
+        std::atomic<uint64_t> run{0};
+    };
+    std::unique_ptr<Share[]> shares_;
     std::atomic<uint64_t> generation_{0};  // bumps once per loop
     std::atomic<bool> open_{false};        // a loop is running: a worker that comes may join it
     std::atomic<unsigned> joined_{0};      // workers inside the current loop

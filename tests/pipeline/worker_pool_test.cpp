@@ -61,3 +61,32 @@ TEST(WorkerPool, EveryThreadTakesPartInALongLoop) {
     });
     EXPECT_GT(on_worker.load(), 0);  // 64 ms of items: the worker woke and took some
 }
+
+// Each thread starts on a contiguous share of the loop, in order (the caller on the first
+// count / size() items), and takes others' items only from their back: so the items a
+// thread runs of its own share are the share's first ones, in order, and every item a
+// thief took from that share comes after them.
+TEST(WorkerPool, EachThreadRunsItsOwnShareFromTheFront) {
+    for (unsigned threads : {2u, 3u}) {
+        WorkerPool pool(threads);
+        constexpr size_t kCount = 48;
+        std::vector<std::vector<size_t>> order(threads);  // each thread writes only its own
+        for (int loop = 0; loop < 3; ++loop) {            // the workers awake after the first
+            for (auto& o : order) o.clear();
+            pool.parallel_for(kCount, [&](size_t i, unsigned thread) {
+                order[thread].push_back(i);
+                std::this_thread::sleep_for(std::chrono::microseconds(300));
+            });
+            for (unsigned t = 0; t < threads; ++t) {
+                const size_t begin = kCount * t / threads, end = kCount * (t + 1) / threads;
+                size_t next = begin;  // the owner's items of its share: begin, begin + 1, ...
+                for (size_t i : order[t])
+                    if (i >= begin && i < end) EXPECT_EQ(i, next++) << "thread " << t << " of " << threads;
+                for (unsigned thief = 0; thief < threads; ++thief)
+                    if (thief != t)
+                        for (size_t i : order[thief])
+                            if (i >= begin && i < end) EXPECT_GE(i, next) << "thread " << thief << " stole from the front of " << t;
+            }
+        }
+    }
+}
