@@ -82,7 +82,7 @@ bool WorkerPool::steal(size_t& index) {
         uint64_t most = 0;
         for (unsigned t = 0; t < size(); ++t) {
             const uint64_t run = shares_[t].run.load(std::memory_order_relaxed);
-            const uint64_t left = end_of(run) > begin_of(run) ? end_of(run) - begin_of(run) : 0;
+            const uint64_t left = end_of(run) - begin_of(run);  // (claims keep begin <= end)
             if (left > most) fullest = &shares_[t], most = left;
         }
         if (!fullest) return false;  // (shares only shrink: nothing is left for anyone)
