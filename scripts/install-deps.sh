@@ -14,7 +14,8 @@ if [ "${1:-}" = "--tests" ]; then
   # assimp-testmodels: the corpus of real model files the thumbnails test renders.
   # ffmpeg: ffprobe and ffmpeg read the animations back; tmux shows the terminal preview;
   # Xvfb and xdotool run the viewer's window and type into it; xwd (x11-apps) reads it back.
-  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels ffmpeg tmux xvfb xauth xdotool x11-apps)
+  # ccache: test.sh builds two trees; it keeps their compiled files for the next run.
+  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels ffmpeg tmux xvfb xauth xdotool x11-apps ccache)
 fi
 missing=()
 for p in "${pkgs[@]}"; do

@@ -1,4 +1,4 @@
-// Stage 10, resolve: the multisampled buffer becomes the picture.
+// Stage 13, resolve: the multisampled buffer becomes the picture.
 // Each channel of a pixel is floor(mean + 0.5) of its stored 8-bit samples; in an sRGB
 // buffer r, g, b average in linear light: the mean of the decoded samples, encoded.
 #include <algorithm>

@@ -4,6 +4,7 @@
 // run in parallel.
 #pragma once
 #include <span>
+#include <tuple>
 
 #include "softraster/context.h"
 #include "softraster/scene/scene_renderer.h"
@@ -73,5 +74,50 @@ SOFTRASTER_SURFACE_MODELS(SOFTRASTER_DECLARE_SURFACE_DRAW)
 #define SOFTRASTER_DECLARE_SURFACE_PHASES(N) SOFTRASTER_SURFACE_PHASES(N, extern)
 SOFTRASTER_SURFACE_VARYING_COUNTS(SOFTRASTER_DECLARE_SURFACE_PHASES)
 #undef SOFTRASTER_DECLARE_SURFACE_PHASES
+
+// The back ends, compiled once per varying layout (pipeline/shader_layout.h) in a generated
+// source file each (surface_back_ends.h), not again in every model's file whose shaders have
+// that layout. One shader of each layout names it here; surface_phases.cpp checks that every
+// surface shader's layout is listed. A layout missing here still works, compiled where it is used.
+#define SOFTRASTER_SURFACE_LAYOUTS(X)                                                                                       \
+    X(Unlit, false, false, false) X(Depth, false, false, false) X(Lambert, false, false, false) X(Unlit, false, true, false) \
+    X(Unlit, true, false, false) X(BlinnPhong, false, false, false) X(Lambert, false, true, false)                          \
+    X(Lambert, true, false, false) X(Unlit, true, true, false) X(BlinnPhong, false, true, false)                           \
+    X(BlinnPhong, true, false, false) X(Lambert, true, true, false) X(BlinnPhong, true, true, false)                       \
+    X(Pbr, true, false, true) X(Pbr, true, true, true)
+// Each layout's name, one token (a macro argument cannot hold the template's commas).
+#define SOFTRASTER_SURFACE_LAYOUT(M, TEXTURED, COLORED, NORMAL_MAPPED) SurfaceLayout_##M##_##TEXTURED##_##COLORED##_##NORMAL_MAPPED
+#define SOFTRASTER_NAME_SURFACE_LAYOUT(M, TEXTURED, COLORED, NORMAL_MAPPED) \
+    using SOFTRASTER_SURFACE_LAYOUT(M, TEXTURED, COLORED, NORMAL_MAPPED) = LayoutOf<SurfaceShader<Shading::M, TEXTURED, COLORED, NORMAL_MAPPED>>;
+SOFTRASTER_SURFACE_LAYOUTS(SOFTRASTER_NAME_SURFACE_LAYOUT)
+#undef SOFTRASTER_NAME_SURFACE_LAYOUT
+#define SOFTRASTER_TILE_BACK_END(L, ...)                                                                                    \
+    uint64_t phases::draw_tile<TileBackEnd<L, __VA_ARGS__>>(const TileBackEnd<L, __VA_ARGS__>&, int, int, const Rect&)
+#define SOFTRASTER_SHADING_PASS(S, L)                                                                                       \
+    uint64_t phases::shading_pass<S, L>(const LayoutShader<L>&, const BinnedTriangles<L::N>&, const RenderState&, Framebuffer&, \
+                                        int, int, const Rect&, uint32_t, const uint32_t*)
+#define SOFTRASTER_GENERAL_BACK_END(L)                                                                                      \
+    uint64_t phases::draw_tile_general<L>(const LayoutShader<L>&, const FragmentOps&, const RenderState&,                   \
+                                          const BinnedTriangles<L::N>&, Framebuffer&, int, int, const Rect&)
+// Every back end of layout L (WHICH: extern to declare them, nothing to define them).
+#define SOFTRASTER_BACK_ENDS(L, WHICH)                                   \
+    WHICH template SOFTRASTER_TILE_BACK_END(L, 1, false);                \
+    WHICH template SOFTRASTER_TILE_BACK_END(L, 1, true);                 \
+    WHICH template SOFTRASTER_TILE_BACK_END(L, 4, false);                \
+    WHICH template SOFTRASTER_TILE_BACK_END(L, 4, true);                 \
+    WHICH template SOFTRASTER_TILE_BACK_END(L, 1, false, DepthStencilTest); \
+    WHICH template SOFTRASTER_SHADING_PASS(1, L);                        \
+    WHICH template SOFTRASTER_SHADING_PASS(4, L);                        \
+    WHICH template SOFTRASTER_GENERAL_BACK_END(L);
+// The layouts in order: CMakeLists.txt generates surface_back_ends_K.cpp for the K-th.
+#define SOFTRASTER_SURFACE_LAYOUT_ENTRY(M, TEXTURED, COLORED, NORMAL_MAPPED) , SOFTRASTER_SURFACE_LAYOUT(M, TEXTURED, COLORED, NORMAL_MAPPED)
+template <class... L>
+using LayoutList = std::tuple<L...>;
+using SurfaceLayouts = LayoutList<void SOFTRASTER_SURFACE_LAYOUTS(SOFTRASTER_SURFACE_LAYOUT_ENTRY)>;  // (from 1: 0 is void)
+#undef SOFTRASTER_SURFACE_LAYOUT_ENTRY
+#define SOFTRASTER_DECLARE_BACK_ENDS(M, TEXTURED, COLORED, NORMAL_MAPPED) \
+    SOFTRASTER_BACK_ENDS(SOFTRASTER_SURFACE_LAYOUT(M, TEXTURED, COLORED, NORMAL_MAPPED), extern)
+SOFTRASTER_SURFACE_LAYOUTS(SOFTRASTER_DECLARE_BACK_ENDS)
+#undef SOFTRASTER_DECLARE_BACK_ENDS
 
 }  // namespace softraster

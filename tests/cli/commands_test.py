@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """commands_test.py SOFTRASTER EXAMPLE WORKDIR: --help texts, the showcase, the example."""
-import os, shutil, subprocess, sys, zlib, struct
+import json, os, shutil, subprocess, sys, zlib, struct
 
 exe, example, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
@@ -29,10 +29,19 @@ r = run([exe])
 if r.returncode != 2 or len(r.stderr.strip().split('\n')) != 1:
     failures.append('no subcommand should exit 2 with one line: %d %r' % (r.returncode, r.stderr))
 
+# The showcase's picture against the one it drew when this test was written
+# (tests/cli/showcase_reference.png; the same pixels in Release, within the conformance bar
+# under the sanitizers' -O0): a blank or broken picture fails, not only a missing file.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+import imgdiff  # noqa: E402
 out = os.path.join(work, 'showcase.png')
 r = run([exe, 'showcase', '-o', out])
 if r.returncode != 0 or png_size(out) != (960, 540):
     failures.append('showcase: %d %s' % (r.returncode, r.stderr))
+else:
+    stats = json.loads(imgdiff.compare(out, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'showcase_reference.png'))[0])
+    if stats['frac_over_2'] > 0.001 or stats['psnr_db'] < 38:
+        failures.append('showcase differs from tests/cli/showcase_reference.png: %s' % stats)
 r = run([exe, 'showcase', '-o', os.path.join(work, 'no_such_dir', 'x.png')])
 if r.returncode != 2:
     failures.append('showcase into a missing folder should exit 2, got %d' % r.returncode)
@@ -43,8 +52,6 @@ if r.returncode != 0 or png_size(out) != (480, 360):
     failures.append('example: %d %s' % (r.returncode, r.stderr))
 
 # --- output formats and the pictures of the depth and stencil buffers
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
-import imgdiff  # noqa: E402
 mirror = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'scenes', 'v2_stencil_mirror.json')
 P = lambda name: os.path.join(work, name)
 r = run([exe, 'render', mirror, '-o', P('m.png')])

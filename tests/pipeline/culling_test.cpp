@@ -1,5 +1,7 @@
 // Culling: windings as they appear on screen, each cull mode and front-face convention,
 // and zero-area triangles, which are never drawn.
+#include <cstdlib>
+
 #include <gtest/gtest.h>
 
 #include "test_support.h"
@@ -54,10 +56,26 @@ TEST(Culling, ZeroAreaTrianglesAreNeverDrawn) {
     Context ctx(fb);
     ctx.clear(glm::vec4(0, 0, 0, 1));
     ctx.state.cull = CullMode::None;
-    // Collinear, and a triangle whose corners differ by less than the 1/256 pixel snapping.
+    // Collinear, and a triangle whose corners differ by less than the 1/256 pixel snapping,
+    // both on the diagonal; in the same draw a real triangle off it, in the upper right,
+    // which must be drawn (so the draw itself ran).
     std::vector<ClipVertexIn> v = {{window_to_clip(1, 1, W, H), 0},     {window_to_clip(8, 8, W, H), 0},
                                    {window_to_clip(15, 15, W, H), 0},   {window_to_clip(4.5f, 4.5f, W, H), 0},
-                                   {window_to_clip(4.501f, 4.5f, W, H), 0}, {window_to_clip(4.5f, 4.501f, W, H), 0}};
-    draw(ctx, ConstantColorShader{}, v, {0, 1, 2, 3, 4, 5});
-    for (int i = 0; i < W * H; ++i) ASSERT_EQ(fb.color_data()[i].r, 0);
+                                   {window_to_clip(4.501f, 4.5f, W, H), 0}, {window_to_clip(4.5f, 4.501f, W, H), 0},
+                                   {window_to_clip(9, 1, W, H), 0},     {window_to_clip(15, 1, W, H), 0},
+                                   {window_to_clip(15, 7, W, H), 0}};
+    draw(ctx, ConstantColorShader{}, v, {0, 1, 2, 3, 4, 5, 6, 7, 8});
+    int lit = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const bool on = fb.color_data()[y * W + x].r != 0;
+            if (std::abs(x - y) <= 2) {
+                ASSERT_FALSE(on) << x << ", " << y;
+            }
+            if (on) {
+                EXPECT_TRUE(x >= 9 && y < 7) << x << ", " << y;
+            }
+            lit += on;
+        }
+    EXPECT_EQ(lit, 6 + 5 + 4 + 3 + 2 + 1);  // the real triangle's pixel centers, top-left rule
 }

@@ -53,9 +53,22 @@ TEST(ShadowPass, ShadowIsTheLightsAbsenceAndNothingElse) {
     }
 }
 
+// Gouraud lights at the vertices, where there is no shadow map to read: a shadow changes
+// nothing. The light does reach the picture (so both are not simply empty): a black light
+// gives another one, and the floor and the blue cube are drawn.
 TEST(ShadowPass, GouraudIsNotShadowed) {
-    EXPECT_EQ(render_json("gouraud", "[0.6, 0.6, 0.6]", R"(, "shadow": {})").pixels,
-              render_json("gouraud", "[0.6, 0.6, 0.6]", "").pixels);
+    const Image shadowed = render_json("gouraud", "[0.6, 0.6, 0.6]", R"(, "shadow": {})");
+    EXPECT_EQ(shadowed.pixels, render_json("gouraud", "[0.6, 0.6, 0.6]", "").pixels);
+    EXPECT_NE(shadowed.pixels, render_json("gouraud", "[0, 0, 0]", R"(, "shadow": {})").pixels);
+    int floor = 0, cube = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const Rgba8 c = shadowed.at(x, y);
+            floor += c.r > 0 && c.r == c.g && c.g == c.b;  // the white floor, gray under the light
+            cube += c.b > 0 && c.r == 0 && c.g == 0;       // the blue cube
+        }
+    EXPECT_GT(floor, 64 * 64 / 2);
+    EXPECT_GT(cube, 100);
 }
 
 namespace {

@@ -7,6 +7,8 @@
 #include <tuple>
 #include <utility>
 
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
 #include <gtest/gtest.h>
 
 #include "softraster/shading/texture.h"
@@ -58,14 +60,42 @@ TEST(Texture, RepeatWrapsAndClampHoldsTheEdge) {
     EXPECT_NEAR(clamp.r, 0.0f, 1e-6f);
 }
 
+// A coordinate that is NaN, infinite or huge reads texels of the texture, never memory
+// beside it: nearest gives one of the four texels exactly, bilinear a blend of them (every
+// channel finite and within the texels' range). Each texel has its own alpha, so a read
+// past the texels would show in it too.
 TEST(Texture, NonFiniteCoordinatesAreSafe) {
-    const Texture t = four_texels();
+    Image img(2, 2);
+    img.at(0, 0) = {255, 0, 0, 64};
+    img.at(1, 0) = {0, 255, 0, 128};
+    img.at(0, 1) = {0, 0, 255, 192};
+    img.at(1, 1) = {255, 255, 255, 255};
+    const Texture t(img);
+    auto texel = [&](int x, int y) {
+        const Rgba8 c = img.at(x, y);
+        return glm::vec4(c.r, c.g, c.b, c.a) / 255.0f;
+    };
+    const glm::vec4 texels[4] = {texel(0, 0), texel(1, 0), texel(0, 1), texel(1, 1)};
+    int checked = 0;
     for (float bad : {NAN, INFINITY, -INFINITY, 3e38f})
-        for (Filter f : {Filter::Nearest, Filter::Bilinear})
-            for (Wrap w : {Wrap::Repeat, Wrap::Clamp}) {
-                const glm::vec4 c = t.sample(glm::vec2(bad, 0.5f), f, w);
-                EXPECT_TRUE(c.a == 1.0f);
-            }
+        for (glm::vec2 uv : {glm::vec2(bad, 0.5f), glm::vec2(0.5f, bad), glm::vec2(bad, bad)})
+            for (Filter f : {Filter::Nearest, Filter::Bilinear})
+                for (Wrap w : {Wrap::Repeat, Wrap::Clamp}) {
+                    SCOPED_TRACE(testing::Message() << "uv " << uv.x << "," << uv.y << " filter " << int(f) << " wrap " << int(w));
+                    const glm::vec4 c = t.sample(uv, f, w);
+                    for (int k = 0; k < 4; ++k) {
+                        ASSERT_TRUE(std::isfinite(c[k]));
+                        EXPECT_GE(c[k], 0.0f);
+                        EXPECT_LE(c[k], 1.0f);
+                    }
+                    EXPECT_GE(c.a, 64.0f / 255.0f);
+                    auto is = [&](const glm::vec4& texel) { return glm::all(glm::lessThan(glm::abs(c - texel), glm::vec4(1e-6f))); };
+                    if (f == Filter::Nearest) {
+                        EXPECT_TRUE(is(texels[0]) || is(texels[1]) || is(texels[2]) || is(texels[3])) << c.r << " " << c.g << " " << c.b << " " << c.a;
+                    }
+                    ++checked;
+                }
+    EXPECT_EQ(checked, 48);
 }
 
 namespace {

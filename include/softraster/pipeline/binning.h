@@ -1,7 +1,7 @@
-// Binning: the front end's last stage. Each triangle that survives clipping and culling is
-// appended to the bin of every tile its bounds touch (the pixels with a sample in its box,
-// sample_pattern.h) and none of its edges leaves wholly outside, so that later each tile is
-// drawn by one thread from its own list.
+// Stage 6, binning: the front end's last stage. Each triangle that survives clipping and
+// culling is appended to the bin of every tile its bounds touch (the pixels with a sample in
+// its box, sample_pattern.h) and none of its edges leaves wholly outside, so that later each
+// tile is drawn by one thread from its own list.
 //
 // Following Mesa llvmpipe (lp_setup -> lp_scene -> lp_rast): the picture is cut into 64x64
 // tiles; one thread at a time owns a tile and draws its triangles in draw order, so no two

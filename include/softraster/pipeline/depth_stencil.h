@@ -1,4 +1,5 @@
-// Stage 9a, the depth and stencil tests.
+// Stage 9, the depth and stencil tests (early: before the shader, unless a fragment may be
+// discarded; general_back_end.h).
 //
 // Each covered sample's interpolated window depth z is compared with the depth stored for
 // that sample, by one of GL's eight functions; a sample that fails is not drawn. Where a

@@ -7,9 +7,11 @@
 //      (line_point_quads.h), so from here on every draw is of triangles;
 //   3. per tile, in draw order, the tile back end (tile_back_end.h): triangle setup,
 //      rasterization, depth test, fragment shading, output merge.
-// A command is a type-erased draw: one virtual call per chunk or per tile; everything per
-// pixel inside it is a template specialized for the shader, the sample count and whether
-// the draw blends, and each phase runs in the copy for this CPU (simd.h, on_best_path).
+// A command is a type-erased draw: one virtual call per chunk or per tile. Vertex processing
+// is specialized for the shader; everything per pixel for the shader's varying layout
+// (shader_layout.h), the sample count and whether the draw blends, with the shader's
+// fragment code called out of line a batch at a time. Each phase runs in the copy for this
+// CPU (simd.h, on_best_path).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -23,6 +25,7 @@
 #include "softraster/pipeline/general_back_end.h"
 #include "softraster/pipeline/hidden_surface_removal.h"
 #include "softraster/pipeline/line_point_quads.h"
+#include "softraster/pipeline/shader_layout.h"
 #include "softraster/pipeline/tile_back_end.h"
 #include "softraster/pipeline/vertex_processing.h"
 
@@ -155,7 +158,8 @@ inline constexpr size_t kTriangleChunk = 8192;
 
 // Each phase's entry into the CPU dispatch, as a template of what it depends on only: the
 // vertex phase is compiled once per shader, binning once per sample count and varying
-// count, whatever the blend mode or the other shaders of the same varyings.
+// count, the back ends once per varying layout, whatever the blend mode or the other
+// shaders of the same varyings.
 namespace phases {
 template <Shader S>
 void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices, size_t begin, size_t end,
@@ -180,11 +184,17 @@ template <class BackEnd>
 uint64_t draw_tile(const BackEnd& back_end, int tx, int ty, const Rect& rect) {
     return simd::on_best_path([&]<bool WideLanes>() { return back_end.template draw<WideLanes>(tx, ty, rect); });
 }
-template <int Samples, Shader S>
-uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typename S::Varyings>>& triangles, const RenderState& state,
-                      Framebuffer& fb, int tx, int ty, const Rect& rect, uint32_t draw, const uint32_t* owners) {
-    return simd::on_best_path(
-        [&]<bool>() { return softraster::shading_pass<Samples>(shader, triangles, state, fb, tx, ty, rect, draw, owners); });
+template <int Samples, class L>
+uint64_t shading_pass(const LayoutShader<L>& shader, const BinnedTriangles<L::N>& triangles, const RenderState& state, Framebuffer& fb,
+                      int tx, int ty, const Rect& rect, uint32_t draw, const uint32_t* owners) {
+    return simd::on_best_path([&]<bool WideLanes>() {
+        return softraster::shading_pass<Samples, L, WideLanes>(shader, triangles, state, fb, tx, ty, rect, draw, owners);
+    });
+}
+template <class L>
+uint64_t draw_tile_general(const LayoutShader<L>& shader, const FragmentOps& ops, const RenderState& state, const BinnedTriangles<L::N>& triangles,
+                           Framebuffer& fb, int tx, int ty, const Rect& rect) {
+    return softraster::draw_tile_general(shader, ops, state, triangles, fb, tx, ty, rect);
 }
 }  // namespace phases
 
@@ -245,38 +255,41 @@ template <Shader S, int Samples, bool Blended, Topology T = Topology::Triangles>
 class TriangleCommand final : public TriangleFrontEnd<S, Samples, T> {
     using Base = TriangleFrontEnd<S, Samples, T>;
     using Base::shader_, Base::state_, Base::triangles;
+    using L = LayoutOf<S>;
 
 public:
     TriangleCommand(const S& shader, const RenderState& state, std::span<const typename S::Vertex> vertices,
                     std::span<const uint32_t> indices)
-        : Base(shader, state, vertices, indices) {
-        this->allows_hsr_ = PureShader<S> && !Blended && softraster::allows_hidden_surface_removal(state_);
+        : Base(shader, state, vertices, indices), layout_(layout_shader(shader_)) {
+        this->allows_hsr_ = L::kPure && !Blended && softraster::allows_hidden_surface_removal(state_);
     }
 
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
         const Rect rect = this->scissored(tile_rect, state_);
         if (rect.empty()) return 0;
-        const TileBackEnd<S, Samples, Blended> back_end{shader_, state_, DepthTest(state_), BlendSettings(state_, target.fb->color_space()), triangles(),
-                                                         *target.fb};
+        const TileBackEnd<L, Samples, Blended> back_end{layout_, state_, DepthTest(state_), BlendSettings(state_, target.fb->color_space()),
+                                                         triangles(), *target.fb};
         return phases::draw_tile(back_end, target.grid.tile_x(tile), target.grid.tile_y(tile), rect);
     }
 
     void visibility_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, uint32_t* owners) override {
-        if constexpr (!Blended && PureShader<S>)
+        if constexpr (!Blended && L::kPure)
             phases::visibility_pass<Samples>(triangles(), state_, *target.fb, target.grid.tile_x(tile),
                                              target.grid.tile_y(tile), rect, draw, owners);
     }
     uint64_t shading_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, const uint32_t* owners) override {
-        if constexpr (!Blended && PureShader<S>)
-            return phases::shading_pass<Samples>(shader_, triangles(), state_, *target.fb, target.grid.tile_x(tile),
+        if constexpr (!Blended && L::kPure)
+            return phases::shading_pass<Samples>(layout_, triangles(), state_, *target.fb, target.grid.tile_x(tile),
                                                  target.grid.tile_y(tile), rect, draw, owners);
         return 0;
     }
 
+private:
+    LayoutShader<L> layout_;  // shader_ as the back ends call it
 };
 
 // A triangle draw in the general back end (general_back_end.h): the same front end, then
-// one fragment at a time with every per-fragment operation. Compiled once per shader.
+// one fragment at a time with every per-fragment operation. Compiled once per varying layout.
 template <Shader S, Topology T = Topology::Triangles>
 class GeneralTriangleCommand final : public TriangleFrontEnd<S, kMaxSamples, T> {
     // Binned by the 16-sample pattern's extent, which holds every pattern's (sample_pattern.h):
@@ -285,33 +298,35 @@ class GeneralTriangleCommand final : public TriangleFrontEnd<S, kMaxSamples, T> 
     // count instead of four.
     using Base = TriangleFrontEnd<S, kMaxSamples, T>;
     using Base::shader_, Base::state_, Base::triangles;
+    using L = LayoutOf<S>;
 
 public:
     GeneralTriangleCommand(const S& shader, const RenderState& state, int samples, ColorSpace color,
                            std::span<const typename S::Vertex> vertices, std::span<const uint32_t> indices)
-        : Base(shader, state, vertices, indices), ops_(state, samples, !PureShader<S>, color) {}
+        : Base(shader, state, vertices, indices), ops_(state, samples, !L::kPure, color), layout_(layout_shader(shader_)) {}
 
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
         const Rect rect = this->scissored(tile_rect, state_);
         if (rect.empty()) return 0;
         const int tx = target.grid.tile_x(tile), ty = target.grid.tile_y(tile);
-        if constexpr (BatchShader<S>) {
+        if constexpr (L::kBatch) {
             // Single-sampled and opaque (or writing no color), with nothing after the shader
             // that could drop a fragment: the fast back end (its fragment queue for small
             // triangles, groups of eight for big ones), with the stencil test where it tests
             // depth. Blended stencil draws and partial color masks stay pixel by pixel below:
             // one more copy of the fast back end per shader would cost build time for rare state.
             if (ops_.samples == 1 && ops_.early && (ops_.blend.replace || !ops_.blend.color_mask)) {
-                const TileBackEnd<S, 1, /*Blended=*/false, DepthStencilTest> back_end{shader_, state_, ops_.tests, ops_.blend,
+                const TileBackEnd<L, 1, /*Blended=*/false, DepthStencilTest> back_end{layout_, state_, ops_.tests, ops_.blend,
                                                                                       triangles(), *target.fb};
                 return phases::draw_tile(back_end, tx, ty, rect);
             }
         }
-        return draw_tile_general(shader_, ops_, state_, triangles(), *target.fb, tx, ty, rect);
+        return phases::draw_tile_general(layout_, ops_, state_, triangles(), *target.fb, tx, ty, rect);
     }
 
 private:
     FragmentOps ops_;
+    LayoutShader<L> layout_;
 };
 
 }  // namespace softraster

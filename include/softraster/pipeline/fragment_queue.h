@@ -1,4 +1,4 @@
-// Stage 8, fragment shading, for small triangles: fragments that passed the depth test wait
+// Stage 11, fragment shading, for small triangles: fragments that passed the depth test wait
 // in a queue and are shaded eight at a time, whichever triangles they came from.
 //
 // A triangle of a pixel or two fills one or two lanes of a row's group of eight; shaded
@@ -16,13 +16,14 @@
 // - opaque colors do not depend on what they overwrite, so writing them later changes nothing.
 // Whoever owns the tile flushes the queue before anything else draws in it.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 
 #include "softraster/framebuffer.h"
-#include "softraster/pipeline/fragment_shading.h"
 #include "softraster/pipeline/output_merge.h"
-#include "softraster/pipeline/shader.h"
+#include "softraster/pipeline/shader_layout.h"
 #include "softraster/pipeline/simd.h"
 
 namespace softraster {
@@ -42,14 +43,15 @@ inline constexpr std::array<std::array<int32_t, simd::kLanes>, 256> kCompressLan
 }();
 }  // namespace detail
 
-template <class S, int Samples>
+template <int N, int Samples>
 class FragmentQueue {
 public:
-    static constexpr int N = kVaryingCount<typename S::Varyings>;
+    using ShadeGroups = void (*)(const void*, FragmentGroups<N>&);
 
-    // Starts queueing for `shader` into `fb` (the queue is empty).
-    void start(const S& shader, Framebuffer& fb) {
-        shader_ = &shader;
+    // Starts queueing for the shader whose batch entry is `shade` into `fb` (the queue is empty).
+    void start(ShadeGroups shade_groups, const void* shader, Framebuffer& fb) {
+        shade_ = shade_groups;
+        shader_ = shader;
         color_ = fb.color_data();
         color_space_ = fb.color_space();
         count_ = 0;
@@ -88,12 +90,13 @@ public:
 
     // Shades and writes everything queued.
     void flush() {
-        for (int first = 0; first < count_; first += simd::kLanes) shade(first, std::min(simd::kLanes, count_ - first));
+        shade(count_);
         count_ = 0;
     }
 
 private:
     static constexpr int kCapacity = 8 * simd::kLanes;
+    static_assert(kCapacity / simd::kLanes <= FragmentGroups<N>::kCapacity, "one call shades a full queue");
     static constexpr size_t kSlots = size_t(kCapacity + simd::kLanes);
 
     // The shader sees one facing per call: a change of facing flushes.
@@ -105,7 +108,7 @@ private:
     // Shades the full groups of eight and moves what is left (fewer than eight) to the front.
     void drain() {
         const int full = count_ - count_ % simd::kLanes;
-        for (int first = 0; first < full; first += simd::kLanes) shade(first, simd::kLanes);
+        shade(full);
         const size_t rest = size_t(count_ - full), from = size_t(full);
         std::copy_n(z_.begin() + from, rest, z_.begin());
         for (auto& v : var_) std::copy_n(v.begin() + from, rest, v.begin());
@@ -114,38 +117,50 @@ private:
         count_ = int(rest);
     }
 
-    // Shades fragments [first, first + count) and writes their colors in queue order.
-    void shade(int first, int count) {
+    // Shades fragments [0, count) with one call, eight to a group, and writes their colors in
+    // queue order.
+    void shade(int count) {
         using namespace simd;
-        const i8 real = kLaneIndex < count;
-        // Lanes past the last fragment get the first one's inputs: the shader then only sees
-        // values it could see anyway (a texture lookup at an arbitrary position would not be).
-        auto load = [&](const std::array<float, kSlots>& a) {
-            f8 v;
-            std::memcpy(&v, a.data() + first, sizeof v);
-            return count == kLanes ? v : select(real, v, splat(v[0]));
-        };
-        std::array<f8, N> var;
-        for (size_t k = 0; k < size_t(N); ++k) var[k] = load(var_[k]);
-        std::array<f8, 4> rgba;
-        run_fragment_batch(*shader_, var, load(z_), front_facing_, rgba);
-        i8 packed;
-        quantize_pack_rgba8(rgba, color_space_, packed);
-        for (int l = 0; l < count; ++l) {
-            const size_t slot = size_t(first + l);
-            Rgba8 c;
-            std::memcpy(&c, reinterpret_cast<const char*>(&packed) + 4 * l, 4);
-            Rgba8* dst = color_ + pixel_[slot];
-            if constexpr (Samples == 1) {
-                *dst = c;
-            } else {
-                for (int s = 0; s < Samples; ++s)
-                    if (samples_[slot] & (1 << s)) dst[s] = c;
+        if (count == 0) return;
+        FragmentGroups<N>& b = batch_;
+        b.count = (count + kLanes - 1) / kLanes;
+        b.front_facing = front_facing_;
+        for (int g = 0; g < b.count; ++g) {
+            const int first = g * kLanes, n = std::min(kLanes, count - first);
+            const i8 real = kLaneIndex < n;
+            // Lanes past the last fragment get the group's first one's inputs: the shader then
+            // only sees values it could see anyway (a texture lookup at an arbitrary position
+            // would not be).
+            auto load = [&](const std::array<float, kSlots>& a) {
+                f8 v;
+                std::memcpy(&v, a.data() + first, sizeof v);
+                return n == kLanes ? v : select(real, v, splat(v[0]));
+            };
+            for (size_t k = 0; k < size_t(N); ++k) b.varyings[g][k] = load(var_[k]);
+            b.z[g] = load(z_);
+        }
+        shade_(shader_, b);
+        for (int g = 0; g < b.count; ++g) {
+            const int first = g * kLanes, n = std::min(kLanes, count - first);
+            i8 packed;
+            quantize_pack_rgba8(b.rgba[g], color_space_, packed);
+            for (int l = 0; l < n; ++l) {
+                const size_t slot = size_t(first + l);
+                Rgba8 c;
+                std::memcpy(&c, reinterpret_cast<const char*>(&packed) + 4 * l, 4);
+                Rgba8* dst = color_ + pixel_[slot];
+                if constexpr (Samples == 1) {
+                    *dst = c;
+                } else {
+                    for (int s = 0; s < Samples; ++s)
+                        if (samples_[slot] & (1 << s)) dst[s] = c;
+                }
             }
         }
     }
 
-    const S* shader_ = nullptr;
+    ShadeGroups shade_ = nullptr;
+    const void* shader_ = nullptr;
     Rgba8* color_ = nullptr;
     ColorSpace color_space_ = ColorSpace::Linear;
     int count_ = 0;
@@ -156,6 +171,7 @@ private:
     alignas(32) std::array<std::array<float, kSlots>, size_t(N)> var_;
     alignas(32) std::array<int32_t, kSlots> pixel_;
     alignas(32) std::array<int32_t, kSlots> samples_;
+    FragmentGroups<N> batch_;
 };
 
 }  // namespace softraster

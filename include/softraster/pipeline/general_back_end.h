@@ -12,21 +12,22 @@
 // take the fast back end instead, with DepthStencilTest as its depth stage
 // (GeneralTriangleCommand in draw_commands.h).
 //
-// To keep the build small this back end is compiled once per shader: the sample count is a
-// run-time value, and only rasterization, the same for every shader, is compiled per count.
+// To keep the build small this back end is compiled once per varying layout
+// (shader_layout.h): the sample count is a run-time value, and only rasterization, the same
+// for every layout of a varying count, is compiled per count.
 #pragma once
 #include <array>
 #include <cstdint>
 #include <utility>
 
 #include "softraster/framebuffer.h"
-#include "softraster/pipeline/fragment_shading.h"
+#include "softraster/pipeline/binned_triangles.h"
 #include "softraster/pipeline/depth_stencil.h"
 #include "softraster/pipeline/fragment_shading.h"
 #include "softraster/pipeline/interpolation.h"
 #include "softraster/pipeline/output_merge.h"
 #include "softraster/pipeline/rasterization.h"
-#include "softraster/pipeline/tile_back_end.h"
+#include "softraster/pipeline/shader_layout.h"
 #include "softraster/render_state.h"
 
 namespace softraster {
@@ -96,8 +97,8 @@ inline unsigned alpha_coverage(float alpha, int samples) {
 
 // One fragment of pixel (x, y) whose samples `covered` lie at depths z: every per-fragment
 // operation (see the top of this file); the shader gets the varyings make_varyings() returns.
-template <Shader S, class MakeVaryings>
-void general_fragment(const S& shader, const FragmentOps& ops, Framebuffer& fb, int x, int y, unsigned covered, const float* z,
+template <int N, class MakeVaryings>
+void general_fragment(const FragmentCalls<N>& calls, const void* shader, const FragmentOps& ops, Framebuffer& fb, int x, int y, unsigned covered, const float* z,
                       float center_z, bool front_facing, MakeVaryings&& make_varyings, uint64_t& shaded) {
     const size_t base = fb.sample_index(x, y);
     float* depth = fb.depth_data() + base;
@@ -109,7 +110,7 @@ void general_fragment(const S& shader, const FragmentOps& ops, Framebuffer& fb, 
     }
     ++shaded;
     glm::vec4 color;
-    if (!run_fragment(shader, make_varyings(), FragCoord{float(x) + 0.5f, float(y) + 0.5f, center_z, front_facing}, color)) return;
+    if (!calls.pixel(shader, make_varyings(), FragCoord{float(x) + 0.5f, float(y) + 0.5f, center_z, front_facing}, color)) return;
     if (!ops.early) {
         if (ops.alpha_test && color.a < ops.alpha_cutoff) return;
         if (ops.alpha_to_coverage) pass &= alpha_coverage(color.a, ops.samples);
@@ -150,19 +151,19 @@ void rasterize_tile(int samples, const BinnedTriangles<N>& triangles, const Rend
 
 // The draw's triangles in one tile (`rect`, already cut to the scissor); returns the
 // fragments shaded.
-template <Shader S>
-uint64_t draw_tile_general(const S& shader, const FragmentOps& ops, const RenderState& state,
-                           const BinnedTriangles<kVaryingCount<typename S::Varyings>>& triangles, Framebuffer& fb, int tx, int ty,
-                           const Rect& rect) {
-    constexpr int N = kVaryingCount<typename S::Varyings>;
-    using V = typename S::Varyings;
+template <class L>
+uint64_t draw_tile_general(const LayoutShader<L>& shader, const FragmentOps& ops, const RenderState& state,
+                           const BinnedTriangles<L::N>& triangles, Framebuffer& fb, int tx, int ty, const Rect& rect) {
+    constexpr int N = L::N;
+    // (This back end has one copy; the shader's AVX2 one where the CPU has it, as the fast back end's.)
+    const FragmentCalls<N>& calls = shader.code->path(SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2());
     uint64_t shaded = 0;
     auto on_pixel = [&](const TriangleSetup<N>& t, const PixelSamples& px) {
         const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
-        general_fragment(shader, ops, fb, px.x, px.y, px.mask, px.z.data(), interpolate_depth(t, i, j), t.front_facing,
-                         [&] { return from_array<V>(interpolate_varyings<S>(t, i, j)); }, shaded);
+        general_fragment(calls, shader.self, ops, fb, px.x, px.y, px.mask, px.z.data(), interpolate_depth(t, i, j), t.front_facing,
+                         [&] { return interpolate_varyings<L>(t, i, j); }, shaded);
     };
-    rasterize_tile<kFlatVaryings<S>, N>(ops.samples, triangles, state, tx, ty, rect, on_pixel);
+    rasterize_tile<L::kFlat, N>(ops.samples, triangles, state, tx, ty, rect, on_pixel);
     return shaded;
 }
 

@@ -19,7 +19,12 @@
 #include <span>
 
 #include "softraster/framebuffer.h"
-#include "softraster/pipeline/tile_back_end.h"
+#include "softraster/pipeline/binned_triangles.h"
+#include "softraster/pipeline/depth_stencil.h"
+#include "softraster/pipeline/fragment_shading.h"
+#include "softraster/pipeline/interpolation.h"
+#include "softraster/pipeline/rasterization.h"
+#include "softraster/pipeline/shader_layout.h"
 #include "softraster/render_state.h"
 
 namespace softraster {
@@ -96,33 +101,34 @@ void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& sta
 }
 
 // Pass 2: shade each pixel for the triangle that owns some of its samples, and write those.
-// Returns the fragments shaded.
-template <int Samples, Shader S>
-uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typename S::Varyings>>& triangles,
-                      const RenderState& state, Framebuffer& fb, int tx, int ty, const Rect& rect, uint32_t draw,
-                      const uint32_t* owners) {
-    constexpr int N = kVaryingCount<typename S::Varyings>;
-    using V = typename S::Varyings;
+// Returns the fragments shaded. Compiled per varying layout (shader_layout.h).
+template <int Samples, class L, bool WideLanes>
+uint64_t shading_pass(const LayoutShader<L>& shader, const BinnedTriangles<L::N>& triangles, const RenderState& state, Framebuffer& fb,
+                      int tx, int ty, const Rect& rect, uint32_t draw, const uint32_t* owners) {
+    constexpr int N = L::N;
+    const FragmentCalls<N>& calls = shader.code->path(WideLanes);
     const int width = fb.width();
     const BlendSettings blend(state, fb.color_space());
     uint64_t shaded = 0;
-    for_each_triangle_setup<Samples, true, kFlatVaryings<S>>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
+    static thread_local PendingGroups<N> groups;  // (off the stack, as in tile_back_end.h)
+    for_each_triangle_setup<Samples, true, L::kFlat>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
         const uint32_t me = owner_id(draw, id);
-        if constexpr (Samples == 1 && BatchShader<S>) {  // eight pixels at a time
+        if constexpr (Samples == 1 && L::kBatch) {  // eight pixels at a time, a batch of groups a call
             using namespace simd;
+            groups.start(setup.front_facing);
             rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
                 const int32_t* owner = reinterpret_cast<const int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
-                Rgba8* color = fb.color_data() + fb.sample_index(0, y);
                 const f8 j = splat(float(y - setup.origin_y));
                 for_each_group(x_begin, x_end, [&](int x, i8 lanes) {
                     const i8 mine = lanes & (load_group<i8>(owner, x - rect.x0, width - rect.x0) == int32_t(me));
                     if (!any(mine)) return;
                     const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
                     shaded += unsigned(__builtin_popcount(bits(mine)));
-                    shade_group</*Blended=*/false>(shader, blend, color, x, width, mine, interpolate_varyings<S>(setup, i, j),
-                                                   interpolate_depth(setup, i, j), setup.front_facing);
+                    groups.add(y, x, mine, interpolate_depth(setup, i, j)) = interpolate_varyings<L>(setup, i, j);
+                    if (groups.full()) shade_and_merge</*Blended=*/false, WideLanes>(calls.groups, shader.self, blend, fb, groups);
                 });
             });
+            shade_and_merge</*Blended=*/false, WideLanes>(calls.groups, shader.self, blend, fb, groups);
         } else {
             rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
                 const uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
@@ -131,9 +137,9 @@ uint64_t shading_pass(const S& shader, const BinnedTriangles<kVaryingCount<typen
                     if ((px.mask & (1u << s)) && owner[s] == me) mine |= 1u << s;
                 if (!mine) return;
                 const float i = float(px.x - setup.origin_x), j = float(px.y - setup.origin_y);
-                const V v = from_array<V>(interpolate_varyings<S>(setup, i, j));
                 glm::vec4 color;
-                run_fragment(shader, v, FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
+                calls.pixel(shader.self, interpolate_varyings<L>(setup, i, j),
+                            FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
                 ++shaded;
                 merge_fragment<Samples, /*Blended=*/false>(blend, fb.color_data() + fb.sample_index(px.x, px.y), mine, color);
             });

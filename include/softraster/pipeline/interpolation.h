@@ -1,4 +1,4 @@
-// Attribute interpolation across a triangle, from the planes of triangle setup.
+// Stage 10, attribute interpolation across a triangle, from the planes of triangle setup.
 //
 // Depth is affine in window space, so its plane gives it directly. Every other attribute a is
 // affine in window space only after division by w, so setup made planes of a/w and 1/w, and

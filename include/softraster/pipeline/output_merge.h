@@ -1,4 +1,4 @@
-// Stage 9b, output merge: blending and the color write (the depth test before it is
+// Stage 12, output merge: blending and the color write (the depth test before it is
 // depth_stencil.h).
 //
 // Color is stored as 8-bit RGBA. Blending follows the spec's formulas on the stored 8-bit

@@ -1,4 +1,4 @@
-// Stage 7, rasterization: which samples of which pixels a set-up triangle covers.
+// Stage 8, rasterization: which samples of which pixels a set-up triangle covers.
 //
 // The edge functions are affine in the pixel position, so along a row each is an arithmetic
 // progression and the pixels inside it form one span, found by an integer division; the

@@ -1,4 +1,4 @@
-// Stage 7, rasterization, for small triangles: coverage of eight pixels at a time in 32-bit
+// Stage 8, rasterization, for small triangles: coverage of eight pixels at a time in 32-bit
 // integer lanes (Giesen, "Optimizing the basic rasterizer", 2013; llvmpipe does the same
 // with 32-bit steps inside a 64x64 tile).
 //

@@ -1,4 +1,4 @@
-// Stage 10, resolve: the multisampled buffer becomes the picture (src/pipeline/resolve.cpp).
+// Stage 13, resolve: the multisampled buffer becomes the picture (src/pipeline/resolve.cpp).
 #pragma once
 #include "softraster/framebuffer.h"
 #include "softraster/image.h"

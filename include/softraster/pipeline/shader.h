@@ -17,6 +17,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "softraster/pipeline/simd.h"
+
 namespace softraster {
 
 // The built-in fragment inputs (gl_FragCoord, gl_FrontFacing): window position of the
@@ -93,5 +95,42 @@ concept Shader = VaryingStruct<typename S::Varyings> &&
         { s.vertex(in, out) } -> std::convertible_to<glm::vec4>;
         { s.fragment(out, frag, color) } -> std::convertible_to<bool>;
     };
+
+// ---- what a shader may offer beyond vertex() and fragment()
+
+// fragment_batch(varyings, z, front_facing, color): the same formulas on eight pixels at
+// once, one simd::f8 per varying and per color channel; the back end then shades eight
+// pixels of a row, or eight queued fragments (fragment_queue.h), at a time.
+template <class S>
+concept BatchShader = Shader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v,
+                                           simd::f8 z, std::array<simd::f8, 4>& color) {
+    s.fragment_batch(v, z, true, color);
+};
+
+// A shader may also offer fragment_quad_rows(v0, v1, z0, z1, front_facing, color0, color1):
+// fragment_batch for the two rows of a row of 2x2 quads (eight pixels of a quads' first row
+// and the eight below them) at once, where doing both together is cheaper (a texture's
+// lookups: one level of detail for both). The back end then shades such pairs with one call.
+template <class S>
+concept QuadRowShader = BatchShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v,
+                                                   simd::f8 z, std::array<simd::f8, 4>& color) {
+    s.fragment_quad_rows(v, v, z, z, true, color, color);
+};
+
+// And fragment_quad_block(v, z, front_facing, color), v, z and color arrays of four: two
+// neighbouring pairs as fragment_quad_rows takes them (groups 0 and 1 the first pair's rows,
+// 2 and 3 the next eight pixels' to the right), where four together are cheaper still.
+template <class S>
+concept QuadBlockShader = QuadRowShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>> (&v)[4],
+                                                       const simd::f8 (&z)[4], std::array<simd::f8, 4> (&color)[4]) {
+    s.fragment_quad_block(v, z, true, color);
+};
+
+// A shader that never discards and has no side effects says so with
+// `static constexpr bool kPure = true;`: its fragments' depth can be written before they
+// are shaded, and they can be shaded in any order (fragment_queue.h,
+// hidden_surface_removal.h).
+template <class S>
+concept PureShader = requires { requires S::kPure; };
 
 }  // namespace softraster

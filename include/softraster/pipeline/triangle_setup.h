@@ -1,4 +1,4 @@
-// Stage 6, triangle setup: everything the rasterizer needs to walk a triangle in one tile.
+// Stage 7, triangle setup: everything the rasterizer needs to walk a triangle in one tile.
 //
 // Following Giesen, "Triangle rasterization in practice" (2013):
 // - vertex positions are snapped to 24.8 fixed point (1/256 pixel, round to nearest);

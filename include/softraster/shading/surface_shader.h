@@ -72,10 +72,6 @@ struct SurfaceShader {
     using Vertex = std::conditional_t<NormalMapped, TangentVertex, MeshVertex>;
     using Varyings = SurfaceVaryings<Model, Textured, Colored, NormalMapped>;
     static constexpr bool kPure = true;  // never discards, no side effects
-    // The specular models' code is long: out of line (fragment_shading.h), compiled once per
-    // shader. Lambert's and flat's is short enough that the call would cost more than it does
-    // (bench_blend, lambert: 27 -> 56 ms out of line; docs/performance.md "Build time").
-    static constexpr bool kOutOfLine = Model == Shading::BlinnPhong || Model == Shading::Phong || Model == Shading::Pbr;
     static constexpr bool kVaryingsOnly = Model != Shading::Depth;  // (depth reads the fragment's z)
     // A texture's level of detail needs the derivatives of uv (shader.h).
     static constexpr int kDerivativeOf = Varyings::kUv ? Varyings::kUvAt : -1;
