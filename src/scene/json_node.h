@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
@@ -91,6 +92,12 @@ public:
     glm::vec3 vec3() const {
         const auto a = numbers<3>();
         return glm::vec3(float(a[0]), float(a[1]), float(a[2]));
+    }
+    // A direction: any vector but the zero vector.
+    glm::vec3 nonzero_vec3() const {
+        const glm::vec3 v = vec3();
+        if (glm::length(v) == 0.0f) fail("must not be the zero vector");
+        return v;
     }
     glm::vec4 vec4() const {
         const auto a = numbers<4>();

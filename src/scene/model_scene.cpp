@@ -1,5 +1,8 @@
 // A model in a scene of its own: framed by its bounding sphere and lit by a default rig.
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -106,6 +109,27 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
     };
     if (picture.shadows) scene.lights.directional[0].shadow = shadow;
     return scene;
+}
+
+std::optional<BoundingSphere> bounding_sphere(const std::vector<SceneObject>& objects) {
+    // Only the vertices drawn count: a file's unused vertices can lie anywhere.
+    auto each_vertex = [&](auto&& f) {
+        for (const SceneObject& o : objects)
+            for (uint32_t i : primitive_indices(*o.mesh, o.primitive))
+                f(glm::vec3(o.model * glm::vec4(o.mesh->vertices[i].position, 1.0f)));
+    };
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    each_vertex([&](const glm::vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    });
+    if (!(lo.x <= hi.x)) return std::nullopt;
+    BoundingSphere s;
+    s.center = 0.5f * (lo + hi);
+    float r2 = 0.0f;
+    each_vertex([&](const glm::vec3& p) { r2 = std::max(r2, glm::dot(p - s.center, p - s.center)); });
+    s.radius = std::sqrt(r2);
+    return s;
 }
 
 }  // namespace softraster

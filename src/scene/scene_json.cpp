@@ -12,6 +12,8 @@
 #include "io/text_parse.h"
 #include "scene/animation_json.h"
 #include "scene/json_node.h"
+#include "scene/lights_json.h"
+#include "scene/state_json.h"
 #include "softraster/error.h"
 #include "softraster/framebuffer.h"
 #include "softraster/io/image_io.h"
@@ -25,45 +27,6 @@ namespace {
 using nlohmann::json;
 using scene_json::Node;
 
-glm::vec3 nonzero_vec3(const Node& n) {
-    const glm::vec3 v = n.vec3();
-    if (glm::length(v) == 0.0f) n.fail("must not be the zero vector");
-    return v;
-}
-
-CompareFunc compare_func(const Node& n) {
-    using F = CompareFunc;
-    return n.choice<F>({{"never", F::Never}, {"less", F::Less}, {"equal", F::Equal}, {"less_equal", F::LessEqual},
-                        {"greater", F::Greater}, {"not_equal", F::NotEqual}, {"greater_equal", F::GreaterEqual},
-                        {"always", F::Always}});
-}
-
-BlendFactor blend_factor(const Node& n) {
-    using F = BlendFactor;
-    return n.choice<F>({{"zero", F::Zero}, {"one", F::One}, {"src_color", F::SrcColor},
-                        {"one_minus_src_color", F::OneMinusSrcColor}, {"dst_color", F::DstColor},
-                        {"one_minus_dst_color", F::OneMinusDstColor}, {"src_alpha", F::SrcAlpha},
-                        {"one_minus_src_alpha", F::OneMinusSrcAlpha}, {"dst_alpha", F::DstAlpha},
-                        {"one_minus_dst_alpha", F::OneMinusDstAlpha}, {"constant_color", F::ConstantColor},
-                        {"one_minus_constant_color", F::OneMinusConstantColor}, {"constant_alpha", F::ConstantAlpha},
-                        {"one_minus_constant_alpha", F::OneMinusConstantAlpha}, {"src_alpha_saturate", F::SrcAlphaSaturate}});
-}
-
-BlendEquation blend_equation(const Node& n) {
-    using E = BlendEquation;
-    return n.choice<E>({{"add", E::Add}, {"subtract", E::Subtract}, {"reverse_subtract", E::ReverseSubtract},
-                        {"min", E::Min}, {"max", E::Max}});
-}
-
-StencilOp stencil_op(const Node& n) {
-    using O = StencilOp;
-    return n.choice<O>({{"keep", O::Keep}, {"zero", O::Zero}, {"replace", O::Replace}, {"incr", O::Incr},
-                        {"incr_wrap", O::IncrWrap}, {"decr", O::Decr}, {"decr_wrap", O::DecrWrap}, {"invert", O::Invert}});
-}
-
-// glBlendEquationSeparate + glBlendFuncSeparate + glBlendColor as an object; the alpha
-// settings default to the color ones.
-// Screen-space ambient occlusion (docs/scene-format.md "Ambient occlusion").
 AmbientOcclusionSettings read_ambient_occlusion(const Node& n) {
     n.expect_object({"radius", "intensity", "bias"});
     AmbientOcclusionSettings s;
@@ -71,34 +34,6 @@ AmbientOcclusionSettings read_ambient_occlusion(const Node& n) {
     if (n.has("intensity")) s.intensity = float(n["intensity"].number_in(0, 1e6, false, false, "0 to 1e6"));
     if (n.has("bias")) s.bias = float(n["bias"].number_in(0, 1, false, true, "0 <= bias < 1"));
     return s;
-}
-
-BlendEquationState read_blend_equation(const Node& n) {
-    n.expect_object({"equation", "equation_alpha", "src", "dst", "src_alpha", "dst_alpha", "constant"});
-    BlendEquationState b;
-    if (n.has("equation")) b.rgb = blend_equation(n["equation"]);
-    b.alpha = n.has("equation_alpha") ? blend_equation(n["equation_alpha"]) : b.rgb;
-    if (n.has("src")) b.src_rgb = blend_factor(n["src"]);
-    if (n.has("dst")) b.dst_rgb = blend_factor(n["dst"]);
-    b.src_alpha = n.has("src_alpha") ? blend_factor(n["src_alpha"]) : b.src_rgb;
-    b.dst_alpha = n.has("dst_alpha") ? blend_factor(n["dst_alpha"]) : b.dst_rgb;
-    if (n.has("constant")) {
-        b.constant = n["constant"].vec4();
-        for (int c = 0; c < 4; ++c)
-            if (b.constant[c] < 0.0f || b.constant[c] > 1.0f) n["constant"].fail("components must be in [0, 1]");
-    }
-    return b;
-}
-
-void read_stencil_face(const Node& n, StencilFace& f) {
-    n.expect_object({"func", "ref", "read_mask", "write_mask", "fail", "depth_fail", "pass"});
-    if (n.has("func")) f.func = compare_func(n["func"]);
-    if (n.has("ref")) f.ref = uint8_t(n["ref"].integer_in(0, 255));
-    if (n.has("read_mask")) f.read_mask = uint8_t(n["read_mask"].integer_in(0, 255));
-    if (n.has("write_mask")) f.write_mask = uint8_t(n["write_mask"].integer_in(0, 255));
-    if (n.has("fail")) f.fail = stencil_op(n["fail"]);
-    if (n.has("depth_fail")) f.depth_fail = stencil_op(n["depth_fail"]);
-    if (n.has("pass")) f.pass = stencil_op(n["pass"]);
 }
 
 struct Loader {
@@ -145,7 +80,7 @@ struct Loader {
             c.orthographic = n["projection"].choice<bool>({{"perspective", false}, {"orthographic", true}});
         c.eye = n["eye"].vec3();
         c.target = n["target"].vec3();
-        if (n.has("up")) c.up = nonzero_vec3(n["up"]);
+        if (n.has("up")) c.up = n["up"].nonzero_vec3();
         if (n.has("fov_y")) c.fov_y = float(n["fov_y"].number_in(0, 180, true, true, "0 < fov_y < 180"));
         if (n.has("height")) c.height = float(n["height"].number_in(0, HUGE_VAL, true, false, "> 0"));
         if (n.has("near")) c.near = float(n["near"].number_in(0, HUGE_VAL, true, false, "> 0"));
@@ -156,70 +91,6 @@ struct Loader {
         if (glm::length(glm::cross(glm::normalize(view), glm::normalize(glm::dvec3(c.up)))) < 1e-9)
             (n.has("up") ? n["up"] : n).fail("up is parallel to the view direction");
         if (n.has("animation")) s.camera_motion = scene_json::read_camera_animation(n["animation"], c);
-    }
-
-    void read_lights(const Node& n, Lights& l) {
-        n.expect_object({"ambient", "directional"}, {"point", "spot"}, version);
-        if (n.has("ambient")) l.ambient = n["ambient"].vec3();
-        for (const char* kind : {"point", "spot"}) {
-            if (!n.has(kind)) continue;
-            const Node list = n[kind];
-            const size_t count = list.array_size();
-            if (l.punctual.size() + count > Lights::kMaxPunctual)
-                list.fail("at most " + std::to_string(Lights::kMaxPunctual) + " point and spot lights together");
-            for (size_t i = 0; i < count; ++i) l.punctual.push_back(read_punctual(list.at(i), kind[0] == 's', l));
-        }
-        if (!n.has("directional")) return;
-        const Node list = n["directional"];
-        const size_t count = list.array_size();
-        if (count > Lights::kMaxDirectional) list.fail("at most 8 directional lights, got " + std::to_string(count));
-        for (size_t i = 0; i < count; ++i) {
-            const Node d = list.at(i);
-            d.expect_object({"direction", "color"}, {"shadow"}, version);
-            DirectionalLight light;
-            light.direction = nonzero_vec3(d["direction"]);
-            light.color = d["color"].vec3();  // no default in the spec: required
-            if (d.has("shadow")) light.shadow = read_shadow(d["shadow"], l);
-            l.directional.push_back(light);
-        }
-    }
-
-    // A light's shadow map (docs/scene-format.md "Shadows").
-    ShadowSettings read_shadow(const Node& n, const Lights& l) {
-        n.expect_object({"size", "bias", "slope_bias", "pcf"});
-        size_t shadowed = 1;
-        for (const DirectionalLight& d : l.directional) shadowed += d.shadow.has_value();
-        for (const PunctualLight& p : l.punctual) shadowed += p.shadow.has_value();
-        if (shadowed > Lights::kMaxShadowed) n.fail("at most " + std::to_string(Lights::kMaxShadowed) + " lights with a shadow");
-        ShadowSettings s;
-        if (n.has("size")) s.size = n["size"].integer_in(16, 8192);
-        if (n.has("bias")) s.bias = float(n["bias"].number_in(0, 1e30, false, false, "0 to 1e30"));
-        if (n.has("slope_bias")) s.slope_bias = float(n["slope_bias"].number_in(0, 1e6, false, false, "0 to 1e6"));
-        if (n.has("pcf")) s.pcf = n["pcf"].integer_in(0, 4);
-        return s;
-    }
-
-    // A point or spot light (docs/scene-format.md "Lights").
-    PunctualLight read_punctual(const Node& d, bool spot, const Lights& lights) {
-        if (spot) d.expect_object({"position", "direction", "color", "intensity", "range", "inner_angle", "outer_angle", "shadow"});
-        else d.expect_object({"position", "color", "intensity", "range", "shadow"});
-        PunctualLight light;
-        light.spot = spot;
-        light.position = d["position"].vec3();
-        if (d.has("color")) light.color = d["color"].vec3();
-        if (d.has("intensity")) light.intensity = float(d["intensity"].number_in(0, 1e30, false, false, "0 to 1e30"));
-        if (d.has("range")) light.range = float(d["range"].number_in(0, 1e30, true, false, "> 0, at most 1e30"));
-        if (spot) {
-            light.direction = nonzero_vec3(d["direction"]);
-            if (d.has("outer_angle")) light.outer_angle = float(d["outer_angle"].number_in(0, 90, true, false, "in (0, 90]"));
-            if (d.has("inner_angle")) light.inner_angle = float(d["inner_angle"].number_in(0, 90, false, false, "in [0, 90]"));
-            if (!(light.inner_angle < light.outer_angle))
-                (d.has("inner_angle") ? d["inner_angle"] : d["outer_angle"]).fail("inner_angle must be less than outer_angle");
-            if (d.has("shadow") && light.outer_angle > 80.0f)
-                d["outer_angle"].fail("a spot light with a shadow has outer_angle at most 80");
-        }
-        if (d.has("shadow")) light.shadow = read_shadow(d["shadow"], lights);  // a point light's: a cube map
-        return light;
     }
 
     std::shared_ptr<const Mesh> read_builtin(const Node& n) {
@@ -363,7 +234,7 @@ struct Loader {
             const Node b = n["blend"];
             if (b.raw().is_object() && version >= 2) {
                 m.blend = BlendMode::Custom;
-                m.blend_equation = read_blend_equation(b);
+                m.blend_equation = scene_json::read_blend_equation(b);
             } else {
                 if (b.raw().is_object()) b.fail("a blend object needs version 2 (version 1 takes opaque, alpha or additive)");
                 m.blend = b.choice<BlendMode>({{"opaque", BlendMode::Opaque}, {"alpha", BlendMode::Alpha}, {"additive", BlendMode::Additive}});
@@ -399,31 +270,6 @@ struct Loader {
             m.normal_texture = read_texture(n["normal_texture"]);
         }
         if (n.has("normal_scale")) m.normal_scale = float(n["normal_scale"].number_in(-1e6, 1e6, false, false, "-1e6..1e6"));
-    }
-
-    void read_depth(const Node& n, ObjectState& st) {
-        n.expect_object({"test", "func", "write", "offset"});
-        if (n.has("test")) st.depth_test = n["test"].boolean();
-        if (n.has("func")) st.depth_func = compare_func(n["func"]);
-        if (n.has("write")) st.depth_write = n["write"].boolean();
-        if (n.has("offset")) {
-            const auto o = n["offset"].numbers<2>();
-            st.offset_factor = float(o[0]);
-            st.offset_units = float(o[1]);
-        }
-    }
-
-    // Either one face state for both faces, or "front" and "back".
-    void read_stencil(const Node& n, ObjectState& st) {
-        st.stencil_test = true;
-        if (n.raw().is_object() && (n.has("front") || n.has("back"))) {
-            n.expect_object({"front", "back"});
-            if (n.has("front")) read_stencil_face(n["front"], st.stencil_front);
-            if (n.has("back")) read_stencil_face(n["back"], st.stencil_back);
-            return;
-        }
-        read_stencil_face(n, st.stencil_front);
-        st.stencil_back = st.stencil_front;
     }
 
     // A model file (version 2): every object it places, each under the object's transform,
@@ -489,8 +335,8 @@ struct Loader {
             o.cull = n["cull"].choice<CullMode>({{"back", CullMode::Back}, {"front", CullMode::Front}, {"none", CullMode::None}});
         if (n.has("front_face")) o.front_face = n["front_face"].choice<FrontFace>({{"ccw", FrontFace::CCW}, {"cw", FrontFace::CW}});
         if (n.has("material") && !n.has("model")) read_material(n["material"], o.material);
-        if (n.has("depth")) read_depth(n["depth"], o.state);
-        if (n.has("stencil")) read_stencil(n["stencil"], o.state);
+        if (n.has("depth")) scene_json::read_depth(n["depth"], o.state);
+        if (n.has("stencil")) scene_json::read_stencil(n["stencil"], o.state);
         if (n.has("scissor")) {
             const Node r = n["scissor"];
             if (r.array_size() != 4) r.fail("expected [x, y, width, height]");
@@ -544,7 +390,7 @@ Scene load_scene(const std::filesystem::path& path) {
     if (top.has("draw_order")) scene.sorted = top["draw_order"].choice<bool>({{"sorted", true}, {"file", false}});
     loader.read_image(top["image"], scene);
     loader.read_camera(top["camera"], scene);
-    if (top.has("lights")) loader.read_lights(top["lights"], scene.lights);
+    if (top.has("lights")) scene_json::read_lights(top["lights"], scene.lights, loader.version);
     const Node objects = top["objects"];
     for (size_t i = 0; i < objects.array_size(); ++i) loader.read_object(objects.at(i), scene.objects);
     add_tangents(scene.objects);

@@ -9,6 +9,7 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "scene/object_state.h"
 #include "scene/record_sky_draw.h"
 #include "scene/record_surface_draw.h"
 #include "softraster/context.h"
@@ -87,38 +88,6 @@ LightSet light_set(const Lights& lights, const std::vector<PositionalLight>& pos
         ++set.count;
     }
     return set;
-}
-
-// The pipeline state of an object (version 2 keys; defaults for version 1). Pixel
-// rectangles (the scissor) scale with supersampling.
-RenderState render_state(const SceneObject& o, int supersample) {
-    RenderState st;
-    st.cull = o.cull;
-    st.front_face = o.front_face;
-    st.depth_test = o.state.depth_test;
-    st.depth_func = o.state.depth_func;
-    st.polygon_offset_factor = o.state.offset_factor;
-    st.polygon_offset_units = o.state.offset_units;
-    st.stencil_test = o.state.stencil_test;
-    st.stencil_front = o.state.stencil_front;
-    st.stencil_back = o.state.stencil_back;
-    if (o.state.scissor) {
-        const ScissorRect& r = *o.state.scissor;
-        st.scissor_test = true;
-        st.scissor = {r.x * supersample, r.y * supersample, r.width * supersample, r.height * supersample};
-    }
-    const Material& m = o.material;
-    st.blend = m.blend;
-    st.blend_equation = m.blend_equation;
-    st.color_write = m.color_mask != 0;
-    st.color_mask = m.color_mask;
-    st.alpha_test = m.alpha_cutoff.has_value();
-    st.alpha_cutoff = m.alpha_cutoff.value_or(0.5f);
-    st.alpha_to_coverage = m.alpha_to_coverage;
-    st.noperspective = m.affine;
-    st.line_width = o.line_width;
-    st.point_size = o.point_size;
-    return st;
 }
 
 // The draw of an object's wireframe: its triangles' edges, unlit in one color, opaque,

@@ -89,7 +89,7 @@ TEST(Texture, NonFiniteCoordinatesAreSafe) {
                         EXPECT_LE(c[k], 1.0f);
                     }
                     EXPECT_GE(c.a, 64.0f / 255.0f);
-                    auto is = [&](const glm::vec4& texel) { return glm::all(glm::lessThan(glm::abs(c - texel), glm::vec4(1e-6f))); };
+                    auto is = [&](const glm::vec4& expected) { return glm::all(glm::lessThan(glm::abs(c - expected), glm::vec4(1e-6f))); };
                     if (f == Filter::Nearest) {
                         EXPECT_TRUE(is(texels[0]) || is(texels[1]) || is(texels[2]) || is(texels[3])) << c.r << " " << c.g << " " << c.b << " " << c.a;
                     }

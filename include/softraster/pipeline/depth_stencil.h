@@ -51,6 +51,9 @@ struct DepthTest {
     DepthTest() = default;
     explicit DepthTest(const RenderState& st) : enabled(st.depth_test), func(st.depth_func), write(st.depth_test && st.depth_write) {}
 
+    // One sample at depth z against the stored one.
+    bool passes(float z, float stored) const { return !enabled || depth_compare(func, z, stored); }
+
     // Eight samples at depth[at, at + 8) of a row of `width` values, at depths z: returns the
     // lanes of `covered` that pass, and stores their z when the draw writes depth.
     simd::i8 test_group(float* depth, int at, int width, simd::f8 z, simd::i8 covered) const {
@@ -65,10 +68,9 @@ struct DepthTest {
     // writing nothing.
     template <int Samples>
     unsigned test_pixel(const float* depth, unsigned covered, const float* z) const {
-        if (!enabled) return covered;
         unsigned pass = 0;
         for (int s = 0; s < Samples; ++s)
-            if ((covered & (1u << s)) && depth_compare(func, z[s], depth[s])) pass |= 1u << s;
+            if ((covered & (1u << s)) && passes(z[s], depth[s])) pass |= 1u << s;
         return pass;
     }
     // Stores z[s] for the samples in `pass` (which passed test_pixel), if the draw writes depth.
@@ -133,10 +135,10 @@ struct DepthStencilTest {
                     continue;
                 }
             }
-            const bool depth_pass = !depth.enabled || depth_compare(depth.func, z[s], stored_z[s]);
+            const bool depth_pass = depth.passes(z[s], stored_z[s]);
             if (stencil) apply_stencil_op(f, depth_pass ? f.pass : f.depth_fail, stored_stencil[s]);
             if (!depth_pass) continue;
-            if (depth.write) stored_z[s] = z[s];
+            depth.write_pixel<1>(stored_z + s, 1u, z + s);
             pass |= 1u << s;
         }
         return pass;
@@ -155,8 +157,8 @@ struct DepthStencilTest {
         for (int l = 0; l < n; ++l) stored[l] = stencil_row[at + l];
         const i8 read = simd::splat_i(f.read_mask), ref = simd::splat_i(f.ref);
         const i8 stencil_pass = covered & depth_compare(f.func, ref & read, stored & read);
-        const simd::f8 old_z = simd::load_group<simd::f8>(depth_row, at, width);
-        const i8 pass = depth.enabled ? stencil_pass & depth_compare(depth.func, z, old_z) : stencil_pass;
+        // The depth test (and write) of the lanes that passed the stencil test.
+        const i8 pass = depth.test_group(depth_row, at, width, z, stencil_pass);
         // Each lane's operation: fail where the stencil test failed, depth fail, pass, or none.
         const i8 result = simd::select(covered & ~stencil_pass, stencil_op_result(f.fail, stored, ref),
                                        simd::select(stencil_pass & ~pass, stencil_op_result(f.depth_fail, stored, ref),
@@ -164,7 +166,6 @@ struct DepthStencilTest {
         const i8 write = simd::splat_i(f.write_mask);
         const i8 updated = (stored & ~write) | (result & write);
         for (int l = 0; l < n; ++l) stencil_row[at + l] = uint8_t(updated[l]);
-        if (depth.write) simd::store_group(depth_row, at, width, simd::select(pass, z, old_z));
         return pass;
     }
 };

@@ -156,7 +156,7 @@ uint64_t draw_tile_general(const LayoutShader<L>& shader, const FragmentOps& ops
                            const BinnedTriangles<L::N>& triangles, Framebuffer& fb, int tx, int ty, const Rect& rect) {
     constexpr int N = L::N;
     // (This back end has one copy; the shader's AVX2 one where the CPU has it, as the fast back end's.)
-    const FragmentCalls<N>& calls = shader.code->path(SOFTRASTER_HAS_AVX2_PATH && simd::cpu_has_avx2());
+    const FragmentCalls<N>& calls = shader.code->path(simd::wide_path_runs());
     uint64_t shaded = 0;
     auto on_pixel = [&](const TriangleSetup<N>& t, const PixelSamples& px) {
         const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center

@@ -42,7 +42,8 @@ inline bool cpu_has_avx2() {
 #else
 #define SOFTRASTER_FLATTEN [[gnu::flatten]]
 #endif
-#if defined(__x86_64__) || defined(__i386__)
+// SOFTRASTER_GENERIC_ONLY (a development build, CMakeLists.txt): no AVX2 copy at all.
+#if (defined(__x86_64__) || defined(__i386__)) && !defined(SOFTRASTER_GENERIC_ONLY)
 #define SOFTRASTER_AVX2_TARGET [[gnu::target("avx2,fma")]] SOFTRASTER_FLATTEN
 #define SOFTRASTER_HAS_AVX2_PATH 1
 #else
@@ -70,9 +71,12 @@ template <class F>
     return run_generic(f);
 }
 inline constexpr bool kGenericApart = true;
+// Whether on_best_path runs the AVX2 copy now: this build has one, the CPU runs it, and the
+// generic path is not forced.
+inline bool wide_path_runs() { return SOFTRASTER_HAS_AVX2_PATH && cpu_has_avx2(); }
 template <bool GenericApart = false, class F>
 auto on_best_path(const F& f) {
-    if (SOFTRASTER_HAS_AVX2_PATH && cpu_has_avx2()) return run_avx2(f);
+    if (wide_path_runs()) return run_avx2(f);
     if constexpr (GenericApart) return run_generic_apart(f);
     else return run_generic(f);
 }

@@ -16,12 +16,12 @@
 #include "softraster/scene/mesh.h"
 #include "softraster/shading/ambient_occlusion.h"
 #include "softraster/shading/environment_lighting.h"
+#include "softraster/shading/surface_vertex.h"  // Shading
 #include "softraster/shading/texture.h"
 #include "softraster/shading/tone_mapping.h"
 
 namespace softraster {
 
-enum class Shading { Unlit, Flat, Gouraud, Lambert, BlinnPhong, Normals, Depth, Phong, Pbr };
 
 struct Material {
     Shading shading = Shading::Lambert;

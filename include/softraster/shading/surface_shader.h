@@ -13,12 +13,11 @@
 #include <glm/mat4x4.hpp>
 
 #include "softraster/pipeline/shader.h"
-#include "softraster/scene/mesh.h"
-#include "softraster/scene/scene.h"
 #include "softraster/shading/lighting.h"
 #include "softraster/shading/normal_mapping.h"
 #include "softraster/shading/pbr.h"
 #include "softraster/shading/surface_uniforms.h"
+#include "softraster/shading/surface_vertex.h"
 #include "softraster/shading/texture.h"
 
 namespace softraster {
