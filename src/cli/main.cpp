@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "git_commit.h"  // (generated: SOFTRASTER_GIT_COMMIT)
 #include "softraster/error.h"
 
 int main(int argc, char** argv) {
@@ -17,7 +18,7 @@ int main(int argc, char** argv) {
     mallopt(M_MMAP_THRESHOLD, 1 << 30);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
     CLI::App app{"softraster: a CPU rasterizer that renders scene files (format versions 1 and 2) and model files (glTF, OBJ, FBX, STL...) to pictures"};
-    app.set_version_flag("--version", "softraster " SOFTRASTER_VERSION);
+    app.set_version_flag("--version", "softraster " SOFTRASTER_VERSION " (commit " SOFTRASTER_GIT_COMMIT ")");
     app.require_subcommand(1);
     app.footer("Run 'softraster COMMAND --help' for a command's options.\n"
                "Exit codes: 0 success, 1 internal error, 2 bad input (scene, mesh, image or flag).");

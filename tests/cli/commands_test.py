@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """commands_test.py SOFTRASTER EXAMPLE WORKDIR: --help texts, the showcase, the example."""
-import json, os, shutil, subprocess, sys, zlib, struct
+import json, os, re, shutil, subprocess, sys, zlib, struct
 
 exe, example, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
@@ -25,6 +25,13 @@ if r.returncode != 0 or 'render' not in r.stdout or 'showcase' not in r.stdout:
 r = run([exe, 'render', '--help'])
 if r.returncode != 0 or '--output' not in r.stdout:
     failures.append('softraster render --help: %d' % r.returncode)
+# --version: the version and the commit built (the source tree's, when it is a git checkout).
+r = run([exe, '--version'])
+src = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
+head = subprocess.run(['git', '-C', src, 'rev-parse', '--short=12', 'HEAD'], capture_output=True, text=True)
+expected = head.stdout.strip() if head.returncode == 0 else 'unknown'
+if r.returncode != 0 or not re.fullmatch(r'softraster \d+\.\d+(\.\d+)? \(commit %s(-dirty)?\)\n' % re.escape(expected), r.stdout):
+    failures.append('softraster --version should name the version and commit %s: %d %r' % (expected, r.returncode, r.stdout))
 r = run([exe])
 if r.returncode != 2 or len(r.stderr.strip().split('\n')) != 1:
     failures.append('no subcommand should exit 2 with one line: %d %r' % (r.returncode, r.stderr))
