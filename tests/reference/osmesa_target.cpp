@@ -53,8 +53,6 @@ OsmesaTarget::OsmesaTarget(int width, int height, int samples, bool srgb)
         if (got != samples)
             throw std::runtime_error("llvmpipe gives " + std::to_string(got) + " samples per pixel where the scene asks for " +
                                      std::to_string(samples) + ": it cannot be this scene's reference");
-    }
-    if (samples > 1) {
         glGenFramebuffers(1, &resolve_fbo_);
         glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
         resolve_color_ = make_renderbuffer(color_format, 1, width, height);

@@ -94,11 +94,8 @@ inline void shade_and_merge(void (*shade)(const void*, FragmentGroups<N>&), cons
                             PendingGroups<N>& p) {
     if (p.empty()) return;
     shade(shader, p.batch);
-#if SOFTRASTER_HAS_AVX2_PATH
-    if constexpr (WideLanes) merge_groups_wide<Blended>(blend, fb, p.batch, p.pass.data());
-    else
-#endif
-        merge_groups_generic<Blended>(blend, fb, p.batch, p.pass.data());
+    if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) merge_groups_wide<Blended>(blend, fb, p.batch, p.pass.data());
+    else merge_groups_generic<Blended>(blend, fb, p.batch, p.pass.data());
     p.batch.count = 0;
 }
 

@@ -142,24 +142,14 @@ template <class S, bool Wide>
 constexpr FragmentCalls<kVaryingCount<typename S::Varyings>> calls() {
     constexpr int N = kVaryingCount<typename S::Varyings>;
     FragmentCalls<N> c;
-#if SOFTRASTER_HAS_AVX2_PATH
-    c.pixel = Wide ? &pixel_wide<S, N> : &pixel_generic<S, N>;
-#else
-    c.pixel = &pixel_generic<S, N>;
-#endif
-    if constexpr (BatchShader<S>) {
-#if SOFTRASTER_HAS_AVX2_PATH
-        c.groups = Wide ? &groups_wide<S, N> : &groups_generic<S, N>;
-#else
-        c.groups = &groups_generic<S, N>;
-#endif
-    }
-    if constexpr (LayoutOf<S>::kQuadRows) {
-#if SOFTRASTER_HAS_AVX2_PATH
-        c.quad_rows = Wide ? &quad_rows_wide<S, N> : &quad_rows_generic<S, N>;
-#else
-        c.quad_rows = &quad_rows_generic<S, N>;
-#endif
+    if constexpr (Wide && SOFTRASTER_HAS_AVX2_PATH) {
+        c.pixel = &pixel_wide<S, N>;
+        if constexpr (BatchShader<S>) c.groups = &groups_wide<S, N>;
+        if constexpr (LayoutOf<S>::kQuadRows) c.quad_rows = &quad_rows_wide<S, N>;
+    } else {
+        c.pixel = &pixel_generic<S, N>;
+        if constexpr (BatchShader<S>) c.groups = &groups_generic<S, N>;
+        if constexpr (LayoutOf<S>::kQuadRows) c.quad_rows = &quad_rows_generic<S, N>;
     }
     return c;
 }

@@ -221,11 +221,8 @@ struct TileBackEnd {
     // draw_groups calls them from several places, and each would otherwise be compiled at each.
     template <bool WideLanes>
     uint64_t draw_rows(const Rows& r, const Span& first, const Span& second) const {
-#if SOFTRASTER_HAS_AVX2_PATH
-        if constexpr (WideLanes) return second.y < 0 ? draw_row_wide(r, first) : draw_quad_rows_wide(r, first, second);
-        else
-#endif
-            return second.y < 0 ? draw_row_generic(r, first) : draw_quad_rows_generic(r, first, second);
+        if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) return second.y < 0 ? draw_row_wide(r, first) : draw_quad_rows_wide(r, first, second);
+        else return second.y < 0 ? draw_row_generic(r, first) : draw_quad_rows_generic(r, first, second);
     }
     [[gnu::noinline]] SOFTRASTER_AVX2_TARGET uint64_t draw_row_wide(const Rows& r, const Span& span) const { return row_groups<true>(r, span); }
     [[gnu::noinline]] uint64_t draw_row_generic(const Rows& r, const Span& span) const { return row_groups<false>(r, span); }
