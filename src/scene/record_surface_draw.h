@@ -105,7 +105,6 @@ SOFTRASTER_SURFACE_LAYOUTS(SOFTRASTER_NAME_SURFACE_LAYOUT)
     WHICH template SOFTRASTER_TILE_BACK_END(L, 1, true);                 \
     WHICH template SOFTRASTER_TILE_BACK_END(L, 4, false);                \
     WHICH template SOFTRASTER_TILE_BACK_END(L, 4, true);                 \
-    WHICH template SOFTRASTER_TILE_BACK_END(L, 1, false, DepthStencilTest); \
     WHICH template SOFTRASTER_SHADING_PASS(1, L);                        \
     WHICH template SOFTRASTER_SHADING_PASS(4, L);                        \
     WHICH template SOFTRASTER_GENERAL_BACK_END(L);

@@ -165,7 +165,7 @@ TEST(Blend, EightLanesEqualOneAtATime) {
                 simd::i8 packed;
                 quantize_pack_rgba8(src, packed);
                 groups.add(0, write, packed);
-                blend_row(BlendSettings(st), row.data(), 8, groups);
+                blend_row<false>(BlendSettings(st), row.data(), 8, groups);
             } else {
                 blend_group<true>(BlendSettings(st), row.data(), 0, 8, write, src);
             }
@@ -173,8 +173,9 @@ TEST(Blend, EightLanesEqualOneAtATime) {
         }
 }
 
-// A whole row of groups (blend_row): each group blended into its own pixels, the row's last
-// group cut by the picture's right edge, pixels outside the groups untouched.
+// A whole row of groups (blend_row, compiled once in src/pipeline/output_merge.cpp): each
+// group blended into its own pixels, the row's last group cut by the picture's right edge,
+// pixels outside the groups untouched.
 TEST(Blend, RowOfGroupsEqualsOnePixelAtATime) {
     std::mt19937 rng(9);
     std::uniform_real_distribution<float> c(0.0f, 1.0f);
@@ -206,8 +207,14 @@ TEST(Blend, RowOfGroupsEqualsOnePixelAtATime) {
             quantize_pack_rgba8(src, packed);
             groups.add(x, write, packed);
         }
-        blend_row(settings, row.data(), width, groups);
+        // Both CPU paths' copies (the AVX2 one where this CPU runs it).
+        std::vector<Rgba8> wide = row;
+        blend_row<false>(settings, row.data(), width, groups);
         ASSERT_EQ(std::memcmp(row.data(), expected.data(), row.size() * sizeof(Rgba8)), 0) << "trial " << trial;
+        if (simd::wide_path_runs()) {
+            blend_row<true>(settings, wide.data(), width, groups);
+            ASSERT_EQ(std::memcmp(wide.data(), expected.data(), wide.size() * sizeof(Rgba8)), 0) << "AVX2, trial " << trial;
+        }
     }
 }
 

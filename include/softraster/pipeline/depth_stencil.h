@@ -15,8 +15,9 @@
 // fails gets the face's `fail` operation and is not drawn; one that then fails the depth test
 // gets `depth_fail`; one that passes both gets `pass` (and its depth written). Operations
 // write only the bits of write_mask: stored = (stored & ~write_mask) | (new & write_mask).
-// Front and back faces have their own state. Only draws that test stencil compile this code
-// (DepthStencilTest, a template parameter of the back end); the others run DepthTest.
+// Front and back faces have their own state. The fast back end's single-sampled opaque
+// copy checks per draw whether stencil is tested (DepthStencilTest::stencil); its other
+// copies, and the hidden-surface passes, run DepthTest alone.
 #pragma once
 #include <cstdint>
 
@@ -117,6 +118,7 @@ struct DepthStencilTest {
     StencilFace front, back;
 
     DepthStencilTest() = default;
+    explicit DepthStencilTest(const DepthTest& d) : depth(d) {}  // no stencil test
     explicit DepthStencilTest(const RenderState& st)
         : depth(st), stencil(st.stencil_test), front(st.stencil_front), back(st.stencil_back) {}
 

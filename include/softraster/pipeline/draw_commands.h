@@ -267,7 +267,7 @@ public:
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
         const Rect rect = this->scissored(tile_rect, state_);
         if (rect.empty()) return 0;
-        const TileBackEnd<L, Samples, Blended> back_end{layout_, state_, DepthTest(state_), BlendSettings(state_, target.fb->color_space()),
+        const TileBackEnd<L, Samples, Blended> back_end{layout_, state_, DepthStencilTest(DepthTest(state_)), BlendSettings(state_, target.fb->color_space()),
                                                          triangles(), *target.fb};
         return phases::draw_tile(back_end, target.grid.tile_x(tile), target.grid.tile_y(tile), rect);
     }
@@ -314,10 +314,9 @@ public:
             // that could drop a fragment: the fast back end (its fragment queue for small
             // triangles, groups of eight for big ones), with the stencil test where it tests
             // depth. Blended stencil draws and partial color masks stay pixel by pixel below:
-            // one more copy of the fast back end per shader would cost build time for rare state.
+            // one more copy of the fast back end per layout would cost build time for rare state.
             if (ops_.samples == 1 && ops_.early && (ops_.blend.replace || !ops_.blend.color_mask)) {
-                const TileBackEnd<L, 1, /*Blended=*/false, DepthStencilTest> back_end{layout_, state_, ops_.tests, ops_.blend,
-                                                                                      triangles(), *target.fb};
+                const TileBackEnd<L, 1, /*Blended=*/false> back_end{layout_, state_, ops_.tests, ops_.blend, triangles(), *target.fb};
                 return phases::draw_tile(back_end, tx, ty, rect);
             }
         }

@@ -47,45 +47,13 @@ struct PendingGroups {
 };
 
 // Merges each group's colors into its row, the lanes `pass`: blend_group, or for Custom
-// blending each row's run of groups together (blend_row).
+// blending each row's run of groups together (blend_row). The same for every layout, so
+// compiled once (src/pipeline/output_merge.cpp) in each CPU path's copy (simd.h), and
+// called once per batch.
 template <bool Blended>
-inline void merge_groups(const BlendSettings& settings, Framebuffer& fb, const GroupPlaces& p, const simd::i8* pass) {
-    // Locals, not references: a color store may alias anything a reference reaches, which
-    // would then be loaded again for every group.
-    const BlendSettings blend = settings;
-    const int width = fb.width(), count = p.count;
-    Rgba8* const color = fb.color_data();
-    const size_t row_stride = fb.sample_index(0, 1);
-    auto color_row = [&](int y) { return color + size_t(y) * row_stride; };
-    if constexpr (Blended) {
-        if (blend.mode == BlendMode::Custom) {
-            RowGroups row;
-            int row_y = -1;
-            for (int g = 0; g < count; ++g) {
-                if (row.count > 0 && (p.y[g] != row_y || row.count == RowGroups::kMax))
-                    blend_row(blend, color_row(row_y), width, row), row.count = 0;
-                row_y = p.y[g];
-                simd::i8 packed;
-                quantize_pack_rgba8(p.rgba[g], packed);
-                row.add(p.x[g], pass[g], packed);
-            }
-            if (row.count > 0) blend_row(blend, color_row(row_y), width, row);
-            return;
-        }
-    }
-    for (int g = 0; g < count; ++g) blend_group<Blended>(blend, color_row(p.y[g]), p.x[g], width, pass[g], p.rgba[g]);
-}
-// The same out of line, in each CPU path's copy (simd.h): called once per batch, not
-// inlined (and so compiled) at each place a back end flushes its groups.
+SOFTRASTER_AVX2_TARGET void merge_groups_wide(const BlendSettings& blend, Framebuffer& fb, const GroupPlaces& p, const simd::i8* pass);
 template <bool Blended>
-[[gnu::noinline]] SOFTRASTER_AVX2_TARGET void merge_groups_wide(const BlendSettings& blend, Framebuffer& fb, const GroupPlaces& p,
-                                                                const simd::i8* pass) {
-    merge_groups<Blended>(blend, fb, p, pass);
-}
-template <bool Blended>
-[[gnu::noinline]] void merge_groups_generic(const BlendSettings& blend, Framebuffer& fb, const GroupPlaces& p, const simd::i8* pass) {
-    merge_groups<Blended>(blend, fb, p, pass);
-}
+void merge_groups_generic(const BlendSettings& blend, Framebuffer& fb, const GroupPlaces& p, const simd::i8* pass);
 
 // Shades the pending groups with one call (`shade`: the layout's groups or quad_rows entry),
 // then merges them and empties the list.

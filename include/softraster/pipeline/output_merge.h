@@ -317,56 +317,15 @@ inline void with_blend_equation(BlendEquation e, F&& fn) {
 }
 
 // Blends the row's groups into `row` (of `width` pixels) with every equation and factor,
-// under the color mask: the same bytes as blend(BlendSettings, ...) pixel by pixel.
-// sf and df below are written for every group g < n before they are read; GCC cannot follow
-// that through the switches and warns. Zeroing them instead costs a memset per row, 10% of a
-// blend-heavy frame.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
+// under the color mask: the same bytes as blend(BlendSettings, ...) pixel by pixel. The
+// same for every shader and back end, so compiled once (src/pipeline/output_merge.cpp), in
+// each CPU path's copy (simd.h).
+void blend_row_wide(const BlendSettings& b, Rgba8* row, int width, const RowGroups& groups);
+void blend_row_generic(const BlendSettings& b, Rgba8* row, int width, const RowGroups& groups);
+template <bool WideLanes>
 inline void blend_row(const BlendSettings& b, Rgba8* row, int width, const RowGroups& groups) {
-    using simd::i8;
-    constexpr size_t kMax = RowGroups::kMax;
-    const size_t n = size_t(groups.count);
-    // Channel-planar copies: s[c][g], d[c][g], and the constant's channels as vectors.
-    std::array<std::array<i8, kMax>, 4> s, d, out;
-    std::array<i8, kMax> old;
-    for (size_t g = 0; g < n; ++g) {
-        old[g] = simd::load_group<i8>(row, groups.x[g], width);
-        for (size_t c = 0; c < 4; ++c) {
-            s[c][g] = (groups.color[g] >> int(8 * c)) & 255;
-            d[c][g] = (old[g] >> int(8 * c)) & 255;
-        }
-    }
-    const std::array<i8, 4> k{simd::splat_i(b.constant.r), simd::splat_i(b.constant.g), simd::splat_i(b.constant.b),
-                              simd::splat_i(b.constant.a)};
-    std::array<i8, kMax> sf, df;
-    for (size_t c = 0; c < 4; ++c) {
-        if (!(b.color_mask & (1u << c))) {
-            out[c] = d[c];
-            continue;
-        }
-        const bool alpha = c == 3;
-        auto factors = [&](BlendFactor f, std::array<i8, kMax>& into) {
-            with_blend_factor(f, [&]<BlendFactor F>() {
-                for (size_t g = 0; g < n; ++g)
-                    into[g] = blend_factor<i8>(F, {s[0][g], s[1][g], s[2][g], s[3][g]}, {d[0][g], d[1][g], d[2][g], d[3][g]}, k, c);
-            });
-        };
-        factors(alpha ? b.eq.src_alpha : b.eq.src_rgb, sf);
-        factors(alpha ? b.eq.dst_alpha : b.eq.dst_rgb, df);
-        with_blend_equation(alpha ? b.eq.alpha : b.eq.rgb, [&]<BlendEquation E>() {
-            for (size_t g = 0; g < n; ++g) out[c][g] = blend_channel<i8>(E, s[c][g], sf[g], d[c][g], df[g]);
-        });
-    }
-    for (size_t g = 0; g < n; ++g) {
-        const i8 packed = out[0][g] | (out[1][g] << 8) | (out[2][g] << 16) | (out[3][g] << 24);
-        simd::store_group(row, groups.x[g], width, simd::select(groups.write[g], packed, old[g]));
-    }
+    if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) blend_row_wide(b, row, width, groups);
+    else blend_row_generic(b, row, width, groups);
 }
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
 
 }  // namespace softraster

@@ -13,7 +13,6 @@
 #pragma once
 #include <array>
 #include <cstdint>
-#include <type_traits>
 
 #include "softraster/framebuffer.h"
 #include "softraster/pipeline/binned_triangles.h"
@@ -29,22 +28,25 @@
 
 namespace softraster {
 
-template <class L, int Samples, bool Blended, class DepthStencil = DepthTest>
+template <class L, int Samples, bool Blended>
 struct TileBackEnd {
     static constexpr int N = L::N;
     static constexpr uint64_t Flat = L::kFlat;
     // Blended draws of shaders that read varyings alone shade a triangle whose varyings are
     // constant once (draw_groups); setup looks for those only in them (setup_planes).
     static constexpr bool kConstant = Blended && L::kVaryingsOnly;
-    // Draws that test stencil (general_back_end.h sends the single-sampled opaque ones here)
-    // run the fragment queue or EightPixelGroups, with the stencil test where depth is tested.
-    static constexpr bool kStencil = std::is_same_v<DepthStencil, DepthStencilTest>;
+    // Single-sampled opaque draws may test stencil too: general_back_end.h sends those that
+    // do here when nothing after the shader can drop a fragment. They run the fragment queue
+    // or EightPixelGroups, with the stencil test where depth is tested: a choice made per
+    // draw, not another copy of the back end per layout.
+    static constexpr bool kMayStencil = Samples == 1 && !Blended;
+    bool stencil() const { return kMayStencil && tests.stencil; }
 
     // By value, not by reference: the tile loops read them after every framebuffer store,
     // which may alias anything, so each reference would cost another load there.
     LayoutShader<L> shader;
     RenderState state;
-    DepthStencil depth;
+    DepthStencilTest tests;  // the stencil test off but where the general back end turns it on
     BlendSettings blend;
     BinnedTriangles<N> triangles;
     Framebuffer& fb;
@@ -102,12 +104,12 @@ struct TileBackEnd {
         }
         for_each_triangle_setup<Samples, true, Flat, kConstant>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
             if constexpr (Samples == 1 && L::kBatch) {
-                if (kStencil || WideLanes || setup.bounds.x1 - setup.bounds.x0 >= 16) {  // EightPixelGroups
+                if (WideLanes || stencil() || setup.bounds.x1 - setup.bounds.x0 >= 16) {  // EightPixelGroups
                     shaded += draw_groups<WideLanes>(calls, setup, pending);
                     return;
                 }
             }
-            if constexpr (!kStencil) shaded += draw_pixels(calls, setup);
+            shaded += draw_pixels(calls, setup);
         });
         return shaded;
     }
@@ -121,7 +123,7 @@ struct TileBackEnd {
         uint64_t shaded = 0;
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
             const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
-            shade_fragment<Samples, Blended>(calls, shader.self, depth, blend, fb, px.x, px.y, px.mask, px.z.data(),
+            shade_fragment<Samples, Blended>(calls, shader.self, tests.depth, blend, fb, px.x, px.y, px.mask, px.z.data(),
                                              interpolate_depth(t, i, j), t.front_facing,
                                              [&] { return interpolate_varyings<L, kConstant>(t, i, j); }, shaded);
         });
@@ -134,22 +136,35 @@ struct TileBackEnd {
         uint8_t* stencil;
     };
     DepthRow depth_row(int y) const {
-        return {fb.depth_data() + fb.sample_index(0, y), kStencil ? fb.stencil_data() + fb.sample_index(0, y) : nullptr};
+        return {fb.depth_data() + fb.sample_index(0, y), stencil() ? fb.stencil_data() + fb.sample_index(0, y) : nullptr};
     }
     // The early depth (and stencil) test of group [x, x + 8) of a row of `width` at depths z.
     simd::i8 test_group(const DepthRow& row, int x, int width, simd::f8 z, simd::i8 covered, bool front_facing) const {
-        if constexpr (kStencil) {
-            return depth.test_group(row.depth, row.stencil, x, width, z, covered, front_facing);
-        } else {
-            return depth.test_group(row.depth, x, width, z, covered);
-        }
+        if constexpr (kMayStencil) return tests.test_group(row.depth, row.stencil, x, width, z, covered, front_facing);
+        else return tests.depth.test_group(row.depth, x, width, z, covered);
     }
 
     // EightPixelGroups: each row's span in groups of eight; depth, 1/w and the varyings
     // from their planes for eight pixels at once, shaded a batch of groups at a time
     // (fragment_shading.h). pending[0] holds single groups, pending[1] quad-row pairs.
+    // Out of line in each CPU path's copy (simd.h), like draw_rows below: the tile loop
+    // calls it from two places, and each would otherwise compile it again.
     template <bool WideLanes>
     uint64_t draw_groups(const FragmentCalls<N>& calls, const TriangleSetup<N>& t, PendingGroups<N> (&pending)[2]) const
+        requires(L::kBatch) {
+        if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) return draw_groups_wide(calls, t, pending);
+        else return draw_groups_generic(calls, t, pending);
+    }
+    [[gnu::noinline]] SOFTRASTER_AVX2_TARGET uint64_t draw_groups_wide(const FragmentCalls<N>& calls, const TriangleSetup<N>& t,
+                                                                       PendingGroups<N> (&pending)[2]) const requires(L::kBatch) {
+        return triangle_groups<true>(calls, t, pending);
+    }
+    [[gnu::noinline]] uint64_t draw_groups_generic(const FragmentCalls<N>& calls, const TriangleSetup<N>& t, PendingGroups<N> (&pending)[2]) const
+        requires(L::kBatch) {
+        return triangle_groups<false>(calls, t, pending);
+    }
+    template <bool WideLanes>
+    uint64_t triangle_groups(const FragmentCalls<N>& calls, const TriangleSetup<N>& t, PendingGroups<N> (&pending)[2]) const
         requires(L::kBatch) {
         using namespace simd;
         uint64_t shaded = 0;
@@ -176,11 +191,11 @@ struct TileBackEnd {
         // until the second's comes. Each pixel's test, color and merge are its own, so the
         // order between the rows changes nothing.
         bool pair_rows = false;
-        if constexpr (L::kQuadRows && !kStencil) pair_rows = !(Blended && blend.mode == BlendMode::Custom) && !constant && blend.color_mask;
+        if constexpr (L::kQuadRows) pair_rows = !(Blended && blend.mode == BlendMode::Custom) && !constant && blend.color_mask && !stencil();
         Span held{-1, 0, 0};  // a quads' first row, waiting for the second
         rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
             const Span span{y, x_begin, x_end};
-            if constexpr (L::kQuadRows && !kStencil) {
+            if constexpr (L::kQuadRows) {
                 if (pair_rows) {
                     if (held.y >= 0 && held.y == y - 1) {
                         shaded += draw_rows<WideLanes>(rows, held, span);
@@ -198,7 +213,7 @@ struct TileBackEnd {
             // frame of big triangles whose color is constant.)
             shaded += row_groups<WideLanes>(rows, span);
         });
-        if constexpr (L::kQuadRows && !kStencil) {
+        if constexpr (L::kQuadRows) {
             if (held.y >= 0) shaded += draw_rows<WideLanes>(rows, held, {});
             shade_and_merge<Blended, WideLanes>(calls.quad_rows, shader.self, blend, fb, pairs);
         }
@@ -266,7 +281,7 @@ struct TileBackEnd {
             groups.add(span.y, x, pass, z) = interpolate_varyings<L, kConstant>(t, i, j);
             if (groups.full()) shade_and_merge<Blended, WideLanes>(r.calls.groups, shader.self, blend, fb, groups);
         });
-        if (custom.count > 0) blend_row(blend, color_row, width, custom);
+        if (custom.count > 0) blend_row<WideLanes>(blend, color_row, width, custom);
         return shaded;
     }
 
@@ -357,7 +372,7 @@ struct TileBackEnd {
                     // at each sample: the pixel's offset from the origin plus the sample's (exact)
                     const f8 i = to_float(G::pixel(v) + (x - t.origin_x)) + to_float(G::dx(v) - G::pixel(v) * kSubpixelOne32) * (1.0f / 256.0f);
                     const f8 j = float(y - t.origin_y) + to_float(G::dy(v)) * (1.0f / 256.0f);
-                    const i8 pass = depth.test_group(depth_row, (x + 2 * v) * Samples, width * Samples, interpolate_depth(t, i, j), covered[size_t(v)]);
+                    const i8 pass = tests.depth.test_group(depth_row, (x + 2 * v) * Samples, width * Samples, interpolate_depth(t, i, j), covered[size_t(v)]);
                     passed |= bits(pass) << (8 * v);
                 }
                 if (!passed) return;
@@ -368,7 +383,7 @@ struct TileBackEnd {
             need_planes();  // (this rasterizer interpolates depth itself)
             rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
                 const size_t base = fb.sample_index(px.x, px.y);
-                const unsigned pass = depth.template test_and_write_pixel<Samples>(fb.depth_data() + base, px.mask, px.z.data());
+                const unsigned pass = tests.depth.template test_and_write_pixel<Samples>(fb.depth_data() + base, px.mask, px.z.data());
                 if (!pass) return;
                 const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
                 ++queued;
