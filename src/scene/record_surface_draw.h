@@ -54,8 +54,8 @@ void record_surface_draw(Context& ctx, const SceneRenderer::Draw& d) {
 SOFTRASTER_SURFACE_MODELS(SOFTRASTER_DECLARE_SURFACE_DRAW)
 #undef SOFTRASTER_DECLARE_SURFACE_DRAW
 
-// The phases that depend on the varying count only (binning and the visibility pass, see
-// draw_commands.h) are compiled once per count in surface_phases.cpp, not again in every
+// The phases that depend on the varying count only (the end of vertex processing, binning
+// and the visibility pass, see draw_commands.h) are compiled once per count in surface_phases.cpp, not again in every
 // model's file whose shaders have that count. A count missing here still works, compiled
 // where it is used.
 #define SOFTRASTER_SURFACE_VARYING_COUNTS(X) X(1) X(3) X(4) X(6) X(7) X(9) X(10) X(12) X(13) X(16) X(20)
@@ -66,6 +66,8 @@ SOFTRASTER_SURFACE_MODELS(SOFTRASTER_DECLARE_SURFACE_DRAW)
     void phases::visibility_pass<S, N>(const BinnedTriangles<N>&, const RenderState&, Framebuffer&, int, int, const Rect&, \
                                        uint32_t, uint32_t*)
 #define SOFTRASTER_SURFACE_PHASES(N, WHICH)                                                              \
+    WHICH template void finish_vertices8_wide<N>(ShadedVertex<N>*, const ClipPlanes&, const Viewport&);    \
+    WHICH template void finish_vertices8_generic<N>(ShadedVertex<N>*, const ClipPlanes&, const Viewport&); \
     WHICH template SOFTRASTER_BIN_PHASE(1, N);                                                           \
     WHICH template SOFTRASTER_BIN_PHASE(4, N);                                                           \
     WHICH template SOFTRASTER_BIN_PHASE(kMaxSamples, N);                                                 \

@@ -164,7 +164,9 @@ namespace phases {
 template <Shader S>
 void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices, size_t begin, size_t end,
                       const DrawTarget& target, std::span<ShadedVertex<kVaryingCount<typename S::Varyings>>> out) {
-    simd::on_best_path([&]<bool>() { softraster::process_vertices(shader, vertices, begin, end, target.planes, target.viewport, out); });
+    simd::on_best_path([&]<bool WideLanes>() {
+        softraster::process_vertices<WideLanes>(shader, vertices, begin, end, target.planes, target.viewport, out);
+    });
 }
 template <int Samples, int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const DrawTarget& target, FaceState faces,

@@ -14,6 +14,7 @@
 
 #include "softraster/pipeline/clipping.h"
 #include "softraster/pipeline/shader.h"
+#include "softraster/pipeline/simd.h"
 #include "softraster/pipeline/viewport.h"
 
 namespace softraster {
@@ -85,9 +86,21 @@ void finish_vertices8(ShadedVertex<N>* out, const ClipPlanes& planes, const View
     }
 }
 
+// The same out of line, in each CPU path's copy (simd.h): it depends on the varying count
+// alone, so it is compiled once per count (src/scene/surface_phases.cpp), not again with
+// every shader; a call per eight vertices costs nothing that shows.
+template <int N>
+[[gnu::noinline]] SOFTRASTER_AVX2_TARGET void finish_vertices8_wide(ShadedVertex<N>* out, const ClipPlanes& planes, const Viewport& vp) {
+    finish_vertices8(out, planes, vp);
+}
+template <int N>
+[[gnu::noinline]] void finish_vertices8_generic(ShadedVertex<N>* out, const ClipPlanes& planes, const Viewport& vp) {
+    finish_vertices8(out, planes, vp);
+}
+
 // Shades vertices [begin, end) of `vertices` into out[begin, end): the vertex shader one
-// vertex at a time, the fixed-function part eight at a time.
-template <Shader S>
+// vertex at a time, the fixed-function part eight at a time. WideLanes: in the AVX2 copy.
+template <bool WideLanes = false, Shader S>
 void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices, size_t begin, size_t end,
                       const ClipPlanes& planes, const Viewport& vp,
                       std::span<ShadedVertex<kVaryingCount<typename S::Varyings>>> out) {
@@ -99,7 +112,8 @@ void process_vertices(const S& shader, std::span<const typename S::Vertex> verti
     size_t i = begin;
     for (; i + simd::kLanes <= end; i += simd::kLanes) {
         for (size_t l = 0; l < size_t(simd::kLanes); ++l) shade(i + l);
-        finish_vertices8(&out[i], planes, vp);
+        if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) finish_vertices8_wide(&out[i], planes, vp);
+        else finish_vertices8_generic(&out[i], planes, vp);
     }
     for (; i < end; ++i) {  // the last few
         shade(i);
