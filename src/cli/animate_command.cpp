@@ -90,71 +90,47 @@ void render_in_order(long count, unsigned threads, Render render, Write write) {
 
 }  // namespace
 
-Run add_animate_command(CLI::App& app) {
-    struct Options {
-        std::string input, out;
-        double turntable = 0.0, duration = 0.0;
-        int fps = 25, threads = 0;
-        ModelOptions model;
+int run_animate(const AnimateOptions& opt) {
+    const std::filesystem::path out = opt.out;
+    check_animation_path(out);
+    const Scene scene = input_scene(opt.input, opt.model);
+    // Keyframes play to their last key; a turntable (asked for, or where nothing moves)
+    // turns once.
+    const double length = animation_length(scene);
+    std::optional<Turntable> turntable;
+    if (opt.turntable > 0.0 || length == 0.0) turntable = Turntable{opt.turntable > 0.0 ? opt.turntable : 4.0};
+    const double duration = opt.duration > 0.0 ? opt.duration : length > 0.0 ? length : turntable->period;
+    const long frames = std::max(1L, std::lround(duration * opt.fps));
+    if (frames > 1000000) throw InputError("--duration times --fps gives more than a million frames");
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<AnimationWriter> writer;
+    // The output cannot be written (no room, no permission): the -o flag's error, as
+    // render reports it (write_output), not an internal one.
+    auto writing = [&](auto&& step) {
+        try {
+            step();
+        } catch (const InputError&) {
+            throw;
+        } catch (const std::runtime_error& e) {
+            throw InputError(e.what());
+        }
     };
-    auto opt = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("animate", "Render a scene's keyframes, a model's animation or a turntable to a video, a GIF or numbered pictures");
-    cmd->add_option("input", opt->input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
-    cmd->add_option("-o,--output", opt->out, "Output by extension: .mp4 (H.264), .webm (VP9), .gif, or numbered pictures such as frames/%04d.png")
-        ->required();
-    cmd->add_option("--turntable", opt->turntable,
-                    "Seconds per full turn of the objects about the vertical axis (default: 4 where nothing else moves)")
-        ->check(CLI::Range(1e-3, 1e6));
-    cmd->add_option("--duration", opt->duration, "Seconds of animation (default: to the last key, else one turn)")->check(CLI::Range(1e-3, 1e6));
-    cmd->add_option("--fps", opt->fps, "Frames per second")->check(CLI::Range(1, 240))->capture_default_str();
-    add_threads_option(*cmd, opt->threads);
-    add_model_options(*cmd, opt->model, 512);
-    cmd->footer("Examples:\n  softraster animate model.glb --turntable 4 -o spin.mp4\n"
-                "  softraster animate model.glb --size 320 --fps 20 -o spin.gif\n"
-                "  softraster animate scene.json --duration 2 -o frames/%04d.png\n"
-                "Frame k shows time k / fps: the same picture as 'render --time k/fps' (with the same --turntable).");
-    return [opt, cmd] {
-        const std::filesystem::path out = opt->out;
-        check_animation_path(out);
-        const Scene scene = input_scene(opt->input, opt->model, *cmd);
-        // Keyframes play to their last key; a turntable (asked for, or where nothing moves)
-        // turns once.
-        const double length = animation_length(scene);
-        std::optional<Turntable> turntable;
-        if (opt->turntable > 0.0 || length == 0.0) turntable = Turntable{opt->turntable > 0.0 ? opt->turntable : 4.0};
-        const double duration = opt->duration > 0.0 ? opt->duration : length > 0.0 ? length : turntable->period;
-        const long frames = std::max(1L, std::lround(duration * opt->fps));
-        if (frames > 1000000) throw InputError("--duration times --fps gives more than a million frames");
-        const auto start = std::chrono::steady_clock::now();
-        std::unique_ptr<AnimationWriter> writer;
-        // The output cannot be written (no room, no permission): the -o flag's error, as
-        // render reports it (write_output), not an internal one.
-        auto writing = [&](auto&& step) {
-            try {
-                step();
-            } catch (const InputError&) {
-                throw;
-            } catch (const std::runtime_error& e) {
-                throw InputError(e.what());
-            }
-        };
-        Progress progress{size_t(frames), "frames"};
-        render_in_order(frames, thread_count(opt->threads), [&](long k, unsigned threads) {
-            return SceneRenderer(frame_at(scene, double(k) / opt->fps, turntable), threads).render();
-        }, [&](long k, const Image& picture) {
-            writing([&] {
-                if (!writer) writer = open_animation(out, picture.width, picture.height, opt->fps, scene.color_space);
-                writer->add(picture);
-            });
-            progress.update(size_t(k + 1), "");
+    Progress progress{size_t(frames), "frames"};
+    render_in_order(frames, thread_count(opt.threads), [&](long k, unsigned threads) {
+        return SceneRenderer(frame_at(scene, double(k) / opt.fps, turntable), threads).render();
+    }, [&](long k, const Image& picture) {
+        writing([&] {
+            if (!writer) writer = open_animation(out, picture.width, picture.height, opt.fps, scene.color_space);
+            writer->add(picture);
         });
-        writing([&] { writer->finish(); });
-        progress.clear();
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "wrote %s (%ld frames, %dx%d, %d fps) in %.1f s\n", out.string().c_str(), frames, scene.width, scene.height,
-                     opt->fps, seconds);
-        return 0;
-    };
+        progress.update(size_t(k + 1), "");
+    });
+    writing([&] { writer->finish(); });
+    progress.clear();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "wrote %s (%ld frames, %dx%d, %d fps) in %.1f s\n", out.string().c_str(), frames, scene.width, scene.height,
+                 opt.fps, seconds);
+    return 0;
 }
 
 }  // namespace softraster::cli

@@ -14,70 +14,53 @@
 
 namespace softraster::cli {
 
-Run add_bench_command(CLI::App& app) {
-    struct Options {
-        std::string scene;
-        int frames = 20, warmup = 3, threads = 0;
-        bool json = false, orbit = false;
-    };
-    auto opt = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("bench", "Time frames of a scene: clear, all draws and the MSAA resolve");
-    cmd->add_option("scene", opt->scene, "Scene file (.json)")->required();
-    cmd->add_option("--frames", opt->frames, "Timed frames")->check(CLI::Range(1, 100000))->capture_default_str();
-    cmd->add_option("--warmup", opt->warmup, "Untimed frames first")->check(CLI::Range(0, 100000))->capture_default_str();
-    add_threads_option(*cmd, opt->threads);
-    cmd->add_flag("--json", opt->json, "Print one JSON line instead of text");
-    cmd->add_flag("--orbit", opt->orbit,
-                  "Turn the objects once around in the timed frames (the turntable of 'animate'), each frame set up anew as "
-                  "'view' and 'animate' do, and report frames per second");
-    return [opt] {
-        const Scene scene = load_scene(opt->scene);
-        const unsigned threads = thread_count(opt->threads);
-        std::optional<SceneRenderer> still;  // without --orbit one renderer draws every frame
-        if (!opt->orbit) still.emplace(scene, threads);
-        std::optional<Framebuffer> fb;  // made by the first frame's renderer, drawn into by all
-        std::vector<double> ms;
-        RenderStats stats;
-        size_t triangles = 0;
-        Image picture(scene.width, scene.height);
-        auto timed_start = std::chrono::steady_clock::now();
-        for (int i = 0; i < opt->warmup + opt->frames; ++i) {
-            if (i == opt->warmup) timed_start = std::chrono::steady_clock::now();
-            const auto t0 = std::chrono::steady_clock::now();
-            std::optional<SceneRenderer> turned;
-            if (opt->orbit) turned.emplace(turned_scene(scene, 360.0 * std::max(0, i - opt->warmup) / opt->frames), threads);
-            const SceneRenderer& renderer = opt->orbit ? *turned : *still;
-            triangles = renderer.triangle_count();
-            if (!fb) fb.emplace(renderer.make_framebuffer());
-            stats = renderer.render(*fb);
-            // With MSAA the resolve is part of every frame (llvmpipe's timing blits to a
-            // resolve buffer too); single-sampled, the framebuffer already is the picture.
-            if (fb->samples() > 1) resolve(*fb, picture);
-            if (scene.supersample > 1) picture = downsample_box(fb->samples() > 1 ? picture : fb->read_pixels(), scene.supersample);
-            const double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-            if (i >= opt->warmup) ms.push_back(dt);
-        }
-        const double fps = opt->frames / std::chrono::duration<double>(std::chrono::steady_clock::now() - timed_start).count();
-        std::sort(ms.begin(), ms.end());
-        const double median = ms[ms.size() / 2];
-        const double tris_per_s = double(triangles) / (median / 1000.0);
-        const double frags_per_s = double(stats.fragments_shaded) / (median / 1000.0);
-        if (opt->json) {
-            std::printf("{\"renderer\": \"softraster\", \"scene\": \"%s\", \"threads\": %u, \"frames\": %d, \"median_ms\": %.3f, "
-                        "\"min_ms\": %.3f, \"max_ms\": %.3f, \"triangles\": %zu, \"triangles_per_s\": %.0f, "
-                        "\"fragments_shaded\": %llu, \"fragments_per_s\": %.0f, \"orbit\": %s, \"fps\": %.2f}\n",
-                        opt->scene.c_str(), threads, opt->frames, median, ms.front(), ms.back(), triangles, tris_per_s,
-                        static_cast<unsigned long long>(stats.fragments_shaded), frags_per_s, opt->orbit ? "true" : "false", fps);
-        } else {
-            std::printf("%s: %dx%d, %d sample(s), %zu triangles, %u thread(s), %d frames after %d warm-up\n",
-                        opt->scene.c_str(), scene.width, scene.height, scene.samples, triangles, threads, opt->frames, opt->warmup);
-            std::printf("  median %.2f ms   min %.2f ms   max %.2f ms   %.1f frames/s%s\n", median, ms.front(), ms.back(), fps,
-                        opt->orbit ? " (one turn)" : "");
-            std::printf("  %.1f M triangles/s   %.1f M fragments shaded/s (%llu per frame)\n", tris_per_s / 1e6,
-                        frags_per_s / 1e6, static_cast<unsigned long long>(stats.fragments_shaded));
-        }
-        return 0;
-    };
+int run_bench(const BenchOptions& opt) {
+    const Scene scene = load_scene(opt.scene);
+    const unsigned threads = thread_count(opt.threads);
+    std::optional<SceneRenderer> still;  // without --orbit one renderer draws every frame
+    if (!opt.orbit) still.emplace(scene, threads);
+    std::optional<Framebuffer> fb;  // made by the first frame's renderer, drawn into by all
+    std::vector<double> ms;
+    RenderStats stats;
+    size_t triangles = 0;
+    Image picture(scene.width, scene.height);
+    auto timed_start = std::chrono::steady_clock::now();
+    for (int i = 0; i < opt.warmup + opt.frames; ++i) {
+        if (i == opt.warmup) timed_start = std::chrono::steady_clock::now();
+        const auto t0 = std::chrono::steady_clock::now();
+        std::optional<SceneRenderer> turned;
+        if (opt.orbit) turned.emplace(turned_scene(scene, 360.0 * std::max(0, i - opt.warmup) / opt.frames), threads);
+        const SceneRenderer& renderer = opt.orbit ? *turned : *still;
+        triangles = renderer.triangle_count();
+        if (!fb) fb.emplace(renderer.make_framebuffer());
+        stats = renderer.render(*fb);
+        // With MSAA the resolve is part of every frame (llvmpipe's timing blits to a
+        // resolve buffer too); single-sampled, the framebuffer already is the picture.
+        if (fb->samples() > 1) resolve(*fb, picture);
+        if (scene.supersample > 1) picture = downsample_box(fb->samples() > 1 ? picture : fb->read_pixels(), scene.supersample);
+        const double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        if (i >= opt.warmup) ms.push_back(dt);
+    }
+    const double fps = opt.frames / std::chrono::duration<double>(std::chrono::steady_clock::now() - timed_start).count();
+    std::sort(ms.begin(), ms.end());
+    const double median = ms[ms.size() / 2];
+    const double tris_per_s = double(triangles) / (median / 1000.0);
+    const double frags_per_s = double(stats.fragments_shaded) / (median / 1000.0);
+    if (opt.json) {
+        std::printf("{\"renderer\": \"softraster\", \"scene\": \"%s\", \"threads\": %u, \"frames\": %d, \"median_ms\": %.3f, "
+                    "\"min_ms\": %.3f, \"max_ms\": %.3f, \"triangles\": %zu, \"triangles_per_s\": %.0f, "
+                    "\"fragments_shaded\": %llu, \"fragments_per_s\": %.0f, \"orbit\": %s, \"fps\": %.2f}\n",
+                    opt.scene.c_str(), threads, opt.frames, median, ms.front(), ms.back(), triangles, tris_per_s,
+                    static_cast<unsigned long long>(stats.fragments_shaded), frags_per_s, opt.orbit ? "true" : "false", fps);
+    } else {
+        std::printf("%s: %dx%d, %d sample(s), %zu triangles, %u thread(s), %d frames after %d warm-up\n",
+                    opt.scene.c_str(), scene.width, scene.height, scene.samples, triangles, threads, opt.frames, opt.warmup);
+        std::printf("  median %.2f ms   min %.2f ms   max %.2f ms   %.1f frames/s%s\n", median, ms.front(), ms.back(), fps,
+                    opt.orbit ? " (one turn)" : "");
+        std::printf("  %.1f M triangles/s   %.1f M fragments shaded/s (%llu per frame)\n", tris_per_s / 1e6,
+                    frags_per_s / 1e6, static_cast<unsigned long long>(stats.fragments_shaded));
+    }
+    return 0;
 }
 
 }  // namespace softraster::cli

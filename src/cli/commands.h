@@ -1,29 +1,63 @@
-// The subcommands of the softraster program. Each registers its options on the CLI11 app
-// and returns the function that runs it (which returns the process exit code).
+// The subcommands of the softraster program. Each takes its options as a plain struct and
+// returns the process exit code; the command line (command_line.cpp, the one source file
+// that includes CLI11) declares the options, fills the structs and runs the command given.
 #pragma once
 #include <algorithm>
-#include <functional>
+#include <string>
 #include <thread>
+#include <vector>
 
-#include <CLI/CLI.hpp>
+#include "cli/model_options.h"
 
 namespace softraster::cli {
 
-using Run = std::function<int()>;
+struct RenderOptions {
+    std::string scene, out, depth_out, stencil_out;
+    int threads = 0;
+    ModelOptions model;
+    double turntable = 0.0, time = 0.0;
+    bool terminal = false;
+};
+int run_render(const RenderOptions& opt);
 
-Run add_render_command(CLI::App& app);
-Run add_showcase_command(CLI::App& app);
-Run add_bench_command(CLI::App& app);
-Run add_thumbnails_command(CLI::App& app);
-Run add_animate_command(CLI::App& app);
-Run add_view_command(CLI::App& app);
+struct ShowcaseOptions {
+    std::string out = "showcase.png";
+};
+int run_showcase(const ShowcaseOptions& opt);
+
+struct BenchOptions {
+    std::string scene;
+    int frames = 20, warmup = 3, threads = 0;
+    bool json = false, orbit = false;
+};
+int run_bench(const BenchOptions& opt);
+
+struct ThumbnailsOptions {
+    std::vector<std::string> inputs;
+    std::string out, report;
+    int jobs = 0, timeout = 60, max_memory = 4096;
+    bool skip_existing = false, quiet = false;
+    ModelOptions model;
+};
+int run_thumbnails(const ThumbnailsOptions& opt);
+
+struct AnimateOptions {
+    std::string input, out;
+    double turntable = 0.0, duration = 0.0;
+    int fps = 25, threads = 0;
+    ModelOptions model;
+};
+int run_animate(const AnimateOptions& opt);
+
+struct ViewOptions {
+    std::string input, screenshots = ".";
+    int threads = 0, orbit_frames = 0;
+    bool terminal = false;
+    ModelOptions model;
+};
+int run_view(const ViewOptions& opt);
 
 // --threads: a count, or 0 for one thread per core.
-inline void add_threads_option(CLI::App& cmd, int& threads) {
-    cmd.add_option("--threads", threads, "Worker threads (0: one per core); the pictures are the same for any count")
-        ->check(CLI::Range(0, 256))
-        ->capture_default_str();
-}
 inline unsigned thread_count(int requested) {
     return requested > 0 ? unsigned(requested) : std::max(1u, std::thread::hardware_concurrency());
 }

@@ -62,43 +62,6 @@ const std::map<std::string, Shading> kShadings = {
 
 }  // namespace
 
-void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size) {
-    cmd.add_option("--size", opt.size, "Picture size W or WxH (default " + std::to_string(default_size) + ")");
-    cmd.add_option("--view", opt.view, "Side the model is seen from")
-        ->check(CLI::IsMember({"three-quarter", "front", "back", "left", "right", "top", "bottom", "iso"}))
-        ->capture_default_str();
-    cmd.add_option("--background", opt.background, "Background R,G,B[,A] (0 to 1) or #RRGGBB[AA] (default 0.2,0.2,0.25)");
-    cmd.add_option("--samples", opt.samples, "MSAA samples per pixel: 1, 2, 4, 8 or 16")
-        ->check(CLI::IsMember({1, 2, 4, 8, 16}))
-        ->capture_default_str();
-    cmd.add_option("--shading", opt.shading, "Shading for every material (default: lambert, or unlit where the file says)")
-        ->check(CLI::IsMember({"unlit", "flat", "gouraud", "lambert", "blinn_phong", "phong", "pbr", "normals", "depth"}));
-    cmd.add_option("--camera", opt.camera, "Look through the file's camera N (0 is the first) instead of framing the model")
-        ->check(CLI::Range(0, 1 << 20));
-    cmd.add_option("--color-space", opt.color_space,
-                   "srgb: color textures decoded, light added and blended linearly, the picture encoded (as glTF intends); "
-                   "linear: every value used as stored")
-        ->check(CLI::IsMember({"srgb", "linear"}))
-        ->capture_default_str();
-    cmd.add_option("--tone-mapping", opt.tone_mapping, "Tone curve for bright light: none, reinhard or aces")
-        ->check(CLI::IsMember({"none", "reinhard", "aces"}))
-        ->capture_default_str();
-    cmd.add_option("--exposure", opt.exposure, "Light multiplied by this before the tone curve")
-        ->check(CLI::Range(1e-6, 1e6))
-        ->capture_default_str();
-    cmd.add_flag("--shadows", opt.shadows,
-                 "Shadow maps for the key light, or the file's lights (at most 4)");
-    cmd.add_flag("--ssao", opt.ambient_occlusion, "Screen-space ambient occlusion: creases and contacts darken (radius a tenth of the model's)");
-    cmd.add_option("--anisotropy", opt.anisotropy, "Anisotropic filtering: up to this many texture lookups along a stretched footprint (1 to 16)")
-        ->check(CLI::Range(1, 16))
-        ->capture_default_str();
-    cmd.add_option("--env", opt.env, "An equirectangular .hdr or .exr picture that lights pbr materials (image-based lighting)");
-    cmd.add_option("--env-intensity", opt.env_intensity, "The environment's light multiplied by this")
-        ->check(CLI::Range(0.0, 1e6))
-        ->capture_default_str();
-    cmd.add_flag("--env-background", opt.env_background, "Show the --env picture behind the model instead of --background");
-    cmd.add_flag("-v,--verbose", opt.verbose, "Also say what the file has that is not drawn");
-}
 
 ModelPicture ModelOptions::picture(int default_size) const {
     ModelPicture p;
@@ -119,9 +82,9 @@ ModelPicture ModelOptions::picture(int default_size) const {
     return p;
 }
 
-Scene input_scene(const std::filesystem::path& path, const ModelOptions& options, const CLI::App& cmd) {
+Scene input_scene(const std::filesystem::path& path, const ModelOptions& options) {
     if (path.extension() == ".json") {
-        if (options.any_given(cmd))
+        if (options.given)
             throw InputError(path.string() + ": --size, --view, --background, --samples, --shading and --camera are for model files; a scene file sets these itself");
         return load_scene(path);
     }
@@ -131,12 +94,6 @@ Scene input_scene(const std::filesystem::path& path, const ModelOptions& options
     if (options.verbose)
         for (const std::string& what : model.ignored) std::fprintf(stderr, "%s: not drawn: %s\n", path.string().c_str(), what.c_str());
     return model_scene(model, picture);
-}
-
-bool ModelOptions::any_given(const CLI::App& cmd) const {
-    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping", "--exposure", "--shadows", "--anisotropy", "--ssao", "--env", "--env-intensity", "--env-background"})
-        if (cmd.count(name) > 0) return true;
-    return false;
 }
 
 }  // namespace softraster::cli

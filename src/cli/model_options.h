@@ -1,11 +1,10 @@
 // The options of the commands that picture model files (render MODEL, thumbnails): size,
-// view, background, samples, shading, the file's camera.
+// view, background, samples, shading, the file's camera. (Declared on the command line in
+// command_line.cpp.)
 #pragma once
 #include <filesystem>
 #include <memory>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 #include "softraster/scene/model.h"
 
@@ -26,15 +25,14 @@ struct ModelOptions {
     // The picture these options describe; `default_size` when --size is not given.
     // Throws InputError for a value that cannot be used.
     ModelPicture picture(int default_size) const;
-    // Whether any option that only models take was given (for `render SCENE.json`).
-    bool any_given(const CLI::App& cmd) const;
+    // Whether any option that only models take was given (an error for `render SCENE.json`;
+    // set by the command line).
+    bool given = false;
 };
-
-void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size);
 
 // The scene of a command's input: a scene file (.json), where the model options are an
 // error, or a model file pictured with them (textures that cannot be read are drawn
 // without, with a warning line; -v says what the file has that is not drawn).
-Scene input_scene(const std::filesystem::path& path, const ModelOptions& options, const CLI::App& cmd);
+Scene input_scene(const std::filesystem::path& path, const ModelOptions& options);
 
 }  // namespace softraster::cli

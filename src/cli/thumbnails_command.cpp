@@ -207,156 +207,130 @@ std::string short_reason(const Item& item) {
 
 }  // namespace
 
-Run add_thumbnails_command(CLI::App& app) {
-    struct Options {
-        std::vector<std::string> inputs;
-        std::string out, report;
-        int jobs = 0, timeout = 60, max_memory = 4096;
-        bool skip_existing = false, quiet = false;
-        ModelOptions model;
-    };
-    auto opt = std::make_shared<Options>();
-    CLI::App* cmd = app.add_subcommand("thumbnails", "Draw a thumbnail of every model file in folders, globs and lists");
-    cmd->add_option("inputs", opt->inputs, "Model files, folders (searched recursively by extension) and glob patterns")->required();
-    cmd->add_option("--out", opt->out, "Output folder; pictures mirror the input tree as NAME.EXT.png")->required();
-    cmd->add_option("--jobs", opt->jobs, "Models drawn at once (0: one per core)")->check(CLI::Range(0, 1024))->capture_default_str();
-    cmd->add_option("--timeout", opt->timeout, "Seconds a model may take before it is given up")
-        ->check(CLI::Range(1, 86400))
-        ->capture_default_str();
-    cmd->add_option("--max-memory", opt->max_memory, "Megabytes of address space each model may use before it is given up")
-        ->check(CLI::Range(256, 1 << 22))
-        ->capture_default_str();
-    cmd->add_flag("--skip-existing", opt->skip_existing, "Leave inputs whose picture exists (resume an interrupted run)");
-    cmd->add_option("--report", opt->report, "JSON report of every input and its result (default OUT/thumbnails.json)");
-    cmd->add_flag("-q,--quiet", opt->quiet, "No line per file and no progress bar; failures and the summary still print");
-    add_model_options(*cmd, opt->model, 256);
-    cmd->footer("Example: softraster thumbnails models/ 'more/*.glb' --out thumbs/ --size 256\n"
-                "Exit codes: 0 every file drawn (or skipped), 1 some failed (see the report), 2 bad usage.");
-    return [opt] {
-        const ModelPicture picture = opt->model.picture(256);
-        const fs::path out = opt->out;
-        std::error_code ec;
-        fs::create_directories(out, ec);
-        if (!fs::is_directory(out, ec)) throw InputError(out.string() + ": cannot create the output folder");
-        std::vector<Item> items = collect(opt->inputs, out);
-        if (items.empty()) throw InputError("no model files found in the inputs");
+int run_thumbnails(const ThumbnailsOptions& opt) {
+    const ModelPicture picture = opt.model.picture(256);
+    const fs::path out = opt.out;
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (!fs::is_directory(out, ec)) throw InputError(out.string() + ": cannot create the output folder");
+    std::vector<Item> items = collect(opt.inputs, out);
+    if (items.empty()) throw InputError("no model files found in the inputs");
 
-        const unsigned cores = thread_count(0);
-        const size_t jobs = std::min<size_t>(opt->jobs > 0 ? size_t(opt->jobs) : cores, items.size());
-        const unsigned threads = std::max(1u, cores / unsigned(jobs));  // (a few large models: threads inside each)
-        Progress progress(items.size());
-        size_t done = 0, failed = 0, skipped = 0;
-        const auto start = Clock::now();
-        auto finish = [&](Item& item) {
-            ++done;
-            const std::string status = item.result.value("status", "failed");
-            if (status == "failed") ++failed;
-            if (status == "skipped") ++skipped;
-            progress.clear();
-            if (status == "failed") {
-                std::fprintf(stderr, "failed  %s: %s\n", item.input.c_str(), short_reason(item).c_str());
-            } else if (!opt->quiet && !progress.on_terminal()) {
-                std::fprintf(stderr, "%-7s %s -> %s\n", status.c_str(), item.input.c_str(), item.output.string().c_str());
-            }
-            if (status == "ok" && item.result.contains("warnings"))
-                for (const auto& w : item.result["warnings"]) std::fprintf(stderr, "warning %s\n", w.get<std::string>().c_str());
-            if (status == "ok" && opt->model.verbose && item.result.contains("ignored"))
-                for (const auto& what : item.result["ignored"])
-                    std::fprintf(stderr, "%s: not drawn: %s\n", item.input.c_str(), what.get<std::string>().c_str());
-            if (!opt->quiet) progress.update(done, failed ? std::to_string(failed) + " failed" : "", true);
-        };
-
-        std::map<pid_t, Child> running;
-        size_t next = 0;
-        while (next < items.size() || !running.empty()) {
-            while (running.size() < jobs && next < items.size()) {
-                Item& item = items[next];
-                const size_t index = next++;
-                if (!item.result.is_null()) {
-                    finish(item);
-                    continue;
-                }
-                if (opt->skip_existing && fs::exists(item.output, ec)) {
-                    item.result = {{"status", "skipped"}, {"reason", "picture exists"}};
-                    finish(item);
-                    continue;
-                }
-                int fds[2];
-                if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-                std::fflush(nullptr);
-                const pid_t pid = fork();
-                if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-                if (pid == 0) {
-                    close(fds[0]);
-                    for (const auto& [other, c] : running) close(c.fd);
-                    draw_in_child(item, picture, threads, size_t(opt->max_memory), fds[1]);
-                }
-                close(fds[1]);
-                running.emplace(pid, Child{index, fds[0], {}, Clock::now()});
-            }
-            if (running.empty()) continue;
-            std::vector<pollfd> polls;
-            std::vector<pid_t> pids;
-            for (auto& [pid, c] : running) {
-                polls.push_back({c.fd, POLLIN, 0});
-                pids.push_back(pid);
-            }
-            poll(polls.data(), polls.size(), 100);
-            for (size_t i = 0; i < polls.size(); ++i) {
-                Child& c = running.at(pids[i]);
-                bool ended = false;
-                if (polls[i].revents & (POLLIN | POLLHUP | POLLERR)) {
-                    char buf[4096];
-                    const ssize_t n = read(c.fd, buf, sizeof buf);
-                    if (n > 0) c.received.append(buf, size_t(n));
-                    else if (n == 0 || errno != EINTR) ended = true;
-                }
-                if (!ended && !c.timed_out && Clock::now() - c.start > std::chrono::seconds(opt->timeout)) {
-                    c.timed_out = true;
-                    kill(pids[i], SIGKILL);
-                }
-                if (!ended) continue;
-                int status = 0;
-                while (waitpid(pids[i], &status, 0) < 0 && errno == EINTR) {
-                }
-                close(c.fd);
-                Item& item = items[c.item];
-                item.result = child_result(c, status, opt->timeout);
-                running.erase(pids[i]);
-                finish(item);
-            }
-            if (!opt->quiet) progress.update(done, failed ? std::to_string(failed) + " failed" : "");
-        }
+    const unsigned cores = thread_count(0);
+    const size_t jobs = std::min<size_t>(opt.jobs > 0 ? size_t(opt.jobs) : cores, items.size());
+    const unsigned threads = std::max(1u, cores / unsigned(jobs));  // (a few large models: threads inside each)
+    Progress progress(items.size());
+    size_t done = 0, failed = 0, skipped = 0;
+    const auto start = Clock::now();
+    auto finish = [&](Item& item) {
+        ++done;
+        const std::string status = item.result.value("status", "failed");
+        if (status == "failed") ++failed;
+        if (status == "skipped") ++skipped;
         progress.clear();
-
-        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        const size_t drawn = items.size() - failed - skipped;
-        json report = {{"summary",
-                        {{"files", items.size()}, {"ok", drawn}, {"failed", failed}, {"skipped", skipped},
-                         {"seconds", seconds}, {"files_per_second", seconds > 0 ? double(drawn) / seconds : 0.0}}},
-                       {"inputs", json::array()}};
-        for (const Item& item : items) {
-            json entry = item.result;
-            entry["input"] = item.input;
-            if (!item.output.empty()) entry["output"] = item.output.string();
-            report["inputs"].push_back(entry);
+        if (status == "failed") {
+            std::fprintf(stderr, "failed  %s: %s\n", item.input.c_str(), short_reason(item).c_str());
+        } else if (!opt.quiet && !progress.on_terminal()) {
+            std::fprintf(stderr, "%-7s %s -> %s\n", status.c_str(), item.input.c_str(), item.output.string().c_str());
         }
-        const fs::path report_path = opt->report.empty() ? out / "thumbnails.json" : fs::path(opt->report);
-        const std::string text = report.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
-        const fs::path tmp = report_path.string() + ".tmp";
-        if (FILE* f = std::fopen(tmp.c_str(), "wb")) {
-            const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-            if (std::fclose(f) == 0 && ok) fs::rename(tmp, report_path, ec);
-            else fs::remove(tmp, ec);
-        } else {
-            ec = std::make_error_code(std::errc(errno));
-        }
-        if (ec) std::fprintf(stderr, "softraster: error: %s: cannot write the report (%s)\n", report_path.string().c_str(), ec.message().c_str());
-        std::fprintf(stderr, "%zu files: %zu drawn, %zu failed, %zu skipped in %.1f s (%.1f files/s); report: %s\n",
-                     items.size(), drawn, failed, skipped, seconds, seconds > 0 ? double(drawn) / seconds : 0.0,
-                     report_path.string().c_str());
-        return failed > 0 ? 1 : 0;
+        if (status == "ok" && item.result.contains("warnings"))
+            for (const auto& w : item.result["warnings"]) std::fprintf(stderr, "warning %s\n", w.get<std::string>().c_str());
+        if (status == "ok" && opt.model.verbose && item.result.contains("ignored"))
+            for (const auto& what : item.result["ignored"])
+                std::fprintf(stderr, "%s: not drawn: %s\n", item.input.c_str(), what.get<std::string>().c_str());
+        if (!opt.quiet) progress.update(done, failed ? std::to_string(failed) + " failed" : "", true);
     };
+
+    std::map<pid_t, Child> running;
+    size_t next = 0;
+    while (next < items.size() || !running.empty()) {
+        while (running.size() < jobs && next < items.size()) {
+            Item& item = items[next];
+            const size_t index = next++;
+            if (!item.result.is_null()) {
+                finish(item);
+                continue;
+            }
+            if (opt.skip_existing && fs::exists(item.output, ec)) {
+                item.result = {{"status", "skipped"}, {"reason", "picture exists"}};
+                finish(item);
+                continue;
+            }
+            int fds[2];
+            if (pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+            std::fflush(nullptr);
+            const pid_t pid = fork();
+            if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+            if (pid == 0) {
+                close(fds[0]);
+                for (const auto& [other, c] : running) close(c.fd);
+                draw_in_child(item, picture, threads, size_t(opt.max_memory), fds[1]);
+            }
+            close(fds[1]);
+            running.emplace(pid, Child{index, fds[0], {}, Clock::now()});
+        }
+        if (running.empty()) continue;
+        std::vector<pollfd> polls;
+        std::vector<pid_t> pids;
+        for (auto& [pid, c] : running) {
+            polls.push_back({c.fd, POLLIN, 0});
+            pids.push_back(pid);
+        }
+        poll(polls.data(), polls.size(), 100);
+        for (size_t i = 0; i < polls.size(); ++i) {
+            Child& c = running.at(pids[i]);
+            bool ended = false;
+            if (polls[i].revents & (POLLIN | POLLHUP | POLLERR)) {
+                char buf[4096];
+                const ssize_t n = read(c.fd, buf, sizeof buf);
+                if (n > 0) c.received.append(buf, size_t(n));
+                else if (n == 0 || errno != EINTR) ended = true;
+            }
+            if (!ended && !c.timed_out && Clock::now() - c.start > std::chrono::seconds(opt.timeout)) {
+                c.timed_out = true;
+                kill(pids[i], SIGKILL);
+            }
+            if (!ended) continue;
+            int status = 0;
+            while (waitpid(pids[i], &status, 0) < 0 && errno == EINTR) {
+            }
+            close(c.fd);
+            Item& item = items[c.item];
+            item.result = child_result(c, status, opt.timeout);
+            running.erase(pids[i]);
+            finish(item);
+        }
+        if (!opt.quiet) progress.update(done, failed ? std::to_string(failed) + " failed" : "");
+    }
+    progress.clear();
+
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const size_t drawn = items.size() - failed - skipped;
+    json report = {{"summary",
+                    {{"files", items.size()}, {"ok", drawn}, {"failed", failed}, {"skipped", skipped},
+                     {"seconds", seconds}, {"files_per_second", seconds > 0 ? double(drawn) / seconds : 0.0}}},
+                   {"inputs", json::array()}};
+    for (const Item& item : items) {
+        json entry = item.result;
+        entry["input"] = item.input;
+        if (!item.output.empty()) entry["output"] = item.output.string();
+        report["inputs"].push_back(entry);
+    }
+    const fs::path report_path = opt.report.empty() ? out / "thumbnails.json" : fs::path(opt.report);
+    const std::string text = report.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
+    const fs::path tmp = report_path.string() + ".tmp";
+    if (FILE* f = std::fopen(tmp.c_str(), "wb")) {
+        const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+        if (std::fclose(f) == 0 && ok) fs::rename(tmp, report_path, ec);
+        else fs::remove(tmp, ec);
+    } else {
+        ec = std::make_error_code(std::errc(errno));
+    }
+    if (ec) std::fprintf(stderr, "softraster: error: %s: cannot write the report (%s)\n", report_path.string().c_str(), ec.message().c_str());
+    std::fprintf(stderr, "%zu files: %zu drawn, %zu failed, %zu skipped in %.1f s (%.1f files/s); report: %s\n",
+                 items.size(), drawn, failed, skipped, seconds, seconds > 0 ? double(drawn) / seconds : 0.0,
+                 report_path.string().c_str());
+    return failed > 0 ? 1 : 0;
 }
 
 }  // namespace softraster::cli

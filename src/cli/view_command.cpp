@@ -95,16 +95,9 @@ std::filesystem::file_time_type modified(const std::filesystem::path& p) {
     return ec ? std::filesystem::file_time_type{} : t;
 }
 
-struct ViewOptions {
-    std::string input, screenshots = ".";
-    int threads = 0, orbit_frames = 0;
-    bool terminal = false;
-    ModelOptions model;
-};
-
 // The viewer's loop, on a window (platform/window.h) or the terminal (platform/terminal.h).
 template <class Display>
-int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::App& cmd) {
+int view_loop(Display& display, Scene loaded, const ViewOptions& options) {
     const std::filesystem::path path = options.input;
     auto stamp = modified(path);
     View view;
@@ -191,7 +184,7 @@ int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::Ap
         if (const auto changed = modified(path); changed != stamp) {  // reload; keep the last good scene on an error
             stamp = changed;
             try {
-                loaded = input_scene(path, options.model, cmd);
+                loaded = input_scene(path, options.model);
                 length = animation_length(loaded);
                 error.clear();
             } catch (const InputError& e) {
@@ -205,32 +198,15 @@ int run_view(Display& display, Scene loaded, const ViewOptions& options, CLI::Ap
 
 }  // namespace
 
-Run add_view_command(CLI::App& app) {
-    auto opt = std::make_shared<ViewOptions>();
-    CLI::App* cmd = app.add_subcommand("view", "Show a scene or model file in a window: turn it around, change the settings live");
-    cmd->add_option("input", opt->input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
-    cmd->add_option("--screenshots", opt->screenshots, "Folder the screenshot key (p or F12) writes softraster-view-NNN.png into")
-        ->capture_default_str();
-    cmd->add_option("--orbit-frames", opt->orbit_frames,
-                    "Turn the objects once around in N frames as fast as they draw, print the frame rate and quit (compare 'bench --orbit')")
-        ->check(CLI::Range(1, 100000));
-    cmd->add_flag("--terminal", opt->terminal, "Draw in this terminal (24-bit color half blocks) instead of a window: the keys work the same");
-    add_threads_option(*cmd, opt->threads);
-    add_model_options(*cmd, opt->model, 512);
-    cmd->footer("Mouse: drag to turn, right-drag to pan, wheel to zoom. Keys: arrows turn and tilt by 15 degrees, r reset,\n"
-                "s shading, w wireframe, m MSAA, c culling, d depth picture, f texture filter, space pause the keyframes,\n"
-                "p or F12 screenshot, q or Esc quit.\n"
-                "The file reloads when it changes; an error in it is shown and the last good version stays.");
-    return [opt, cmd] {
-        const std::filesystem::path path = opt->input;
-        Scene loaded = input_scene(path, opt->model, *cmd);
-        if (opt->terminal) {
-            platform::Terminal terminal;
-            return run_view(terminal, std::move(loaded), *opt, *cmd);
-        }
-        platform::Window window("softraster view: " + path.filename().string(), loaded.width, loaded.height);
-        return run_view(window, std::move(loaded), *opt, *cmd);
-    };
+int run_view(const ViewOptions& opt) {
+    const std::filesystem::path path = opt.input;
+    Scene loaded = input_scene(path, opt.model);
+    if (opt.terminal) {
+        platform::Terminal terminal;
+        return view_loop(terminal, std::move(loaded), opt);
+    }
+    platform::Window window("softraster view: " + path.filename().string(), loaded.width, loaded.height);
+    return view_loop(window, std::move(loaded), opt);
 }
 
 }  // namespace softraster::cli

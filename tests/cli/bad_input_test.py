@@ -263,6 +263,10 @@ expect_bad('truncated BMP', tex_scene('texbmptrunc', 'short.bmp', bmp_header + b
 tga = bytes([0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 16, 0, 24, 0]) + b'\x40' * 50
 expect_bad('truncated TGA', tex_scene('textga', 'short.tga', tga)[0], ['short.tga', 'truncated'])
 
+# --- options only model files take, given with a scene file (the scene sets these itself)
+expect_bad('--size with a scene file', write('modelsize.json', json.dumps(BASE)), ['modelsize.json', 'for model files'], ['--size', '64'])
+expect_bad('--shadows with a scene file', write('modelshadows.json', json.dumps(BASE)), ['modelshadows.json', 'for model files'], ['--shadows'])
+
 # --- NaN positions render the rest; no faces draws nothing
 nan_scene = obj_scene('nanpos', 'v nan 0 0\nv 1 0 0\nv 0 1 0\nv -1 -1 0\nv 1 -1 0\nv 0 0.5 0\nf 1 2 3\nf 4 5 6\n')[0]
 out = os.path.join(work, 'nan.png')

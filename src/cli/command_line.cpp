@@ -1,0 +1,239 @@
+// The command line: every command's options (CLI11), parsed into the command's option
+// struct (commands.h), then the command run. The one source file that includes CLI11, whose
+// header compiles a few seconds' worth of code into every file that includes it.
+#include <exception>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/command_line.h"
+#include "cli/commands.h"
+#include "git_commit.h"  // (generated: SOFTRASTER_GIT_COMMIT)
+#include "softraster/error.h"
+
+namespace softraster::cli {
+namespace {
+
+using Run = std::function<int()>;
+
+// --threads: a count, or 0 for one thread per core.
+void add_threads_option(CLI::App& cmd, int& threads) {
+    cmd.add_option("--threads", threads, "Worker threads (0: one per core); the pictures are the same for any count")
+        ->check(CLI::Range(0, 256))
+        ->capture_default_str();
+}
+
+void add_model_options(CLI::App& cmd, ModelOptions& opt, int default_size) {
+    cmd.add_option("--size", opt.size, "Picture size W or WxH (default " + std::to_string(default_size) + ")");
+    cmd.add_option("--view", opt.view, "Side the model is seen from")
+        ->check(CLI::IsMember({"three-quarter", "front", "back", "left", "right", "top", "bottom", "iso"}))
+        ->capture_default_str();
+    cmd.add_option("--background", opt.background, "Background R,G,B[,A] (0 to 1) or #RRGGBB[AA] (default 0.2,0.2,0.25)");
+    cmd.add_option("--samples", opt.samples, "MSAA samples per pixel: 1, 2, 4, 8 or 16")
+        ->check(CLI::IsMember({1, 2, 4, 8, 16}))
+        ->capture_default_str();
+    cmd.add_option("--shading", opt.shading, "Shading for every material (default: lambert, or unlit where the file says)")
+        ->check(CLI::IsMember({"unlit", "flat", "gouraud", "lambert", "blinn_phong", "phong", "pbr", "normals", "depth"}));
+    cmd.add_option("--camera", opt.camera, "Look through the file's camera N (0 is the first) instead of framing the model")
+        ->check(CLI::Range(0, 1 << 20));
+    cmd.add_option("--color-space", opt.color_space,
+                   "srgb: color textures decoded, light added and blended linearly, the picture encoded (as glTF intends); "
+                   "linear: every value used as stored")
+        ->check(CLI::IsMember({"srgb", "linear"}))
+        ->capture_default_str();
+    cmd.add_option("--tone-mapping", opt.tone_mapping, "Tone curve for bright light: none, reinhard or aces")
+        ->check(CLI::IsMember({"none", "reinhard", "aces"}))
+        ->capture_default_str();
+    cmd.add_option("--exposure", opt.exposure, "Light multiplied by this before the tone curve")
+        ->check(CLI::Range(1e-6, 1e6))
+        ->capture_default_str();
+    cmd.add_flag("--shadows", opt.shadows,
+                 "Shadow maps for the key light, or the file's lights (at most 4)");
+    cmd.add_flag("--ssao", opt.ambient_occlusion, "Screen-space ambient occlusion: creases and contacts darken (radius a tenth of the model's)");
+    cmd.add_option("--anisotropy", opt.anisotropy, "Anisotropic filtering: up to this many texture lookups along a stretched footprint (1 to 16)")
+        ->check(CLI::Range(1, 16))
+        ->capture_default_str();
+    cmd.add_option("--env", opt.env, "An equirectangular .hdr or .exr picture that lights pbr materials (image-based lighting)");
+    cmd.add_option("--env-intensity", opt.env_intensity, "The environment's light multiplied by this")
+        ->check(CLI::Range(0.0, 1e6))
+        ->capture_default_str();
+    cmd.add_flag("--env-background", opt.env_background, "Show the --env picture behind the model instead of --background");
+    cmd.add_flag("-v,--verbose", opt.verbose, "Also say what the file has that is not drawn");
+}
+
+// Whether any option that only models take was given (an error for `render SCENE.json`).
+bool model_options_given(const CLI::App& cmd) {
+    for (const char* name : {"--size", "--view", "--background", "--samples", "--shading", "--camera", "--color-space", "--tone-mapping",
+                             "--exposure", "--shadows", "--anisotropy", "--ssao", "--env", "--env-intensity", "--env-background"})
+        if (cmd.count(name) > 0) return true;
+    return false;
+}
+
+Run add_render(CLI::App& app) {
+    auto opt = std::make_shared<RenderOptions>();
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene file or a model file to a picture (PNG, TGA, PPM or EXR)");
+    cmd->add_option("input", opt->scene,
+                    "Scene file (.json), or a model file (glTF, GLB, OBJ, FBX, STL, DAE, 3DS, PLY...) to frame and light automatically")
+        ->required();
+    cmd->add_option("-o,--output", opt->out,
+                    "Output picture, format by extension: .png, .tga, .ppm, .exr (float, linear) (default: the scene's name with .png)");
+    cmd->add_option("--depth-out", opt->depth_out,
+                    "Also write the depth buffer: .png (16-bit, scaled from its least to its greatest finite value) or .exr (float, as stored)");
+    cmd->add_option("--stencil-out", opt->stencil_out, "Also write the stencil buffer as an 8-bit gray .png");
+    add_threads_option(*cmd, opt->threads);
+    cmd->add_flag("--terminal", opt->terminal,
+                  "Also draw the picture in the terminal (24-bit color half blocks, sized to the terminal); without -o, only there");
+    add_model_options(*cmd, opt->model, 512);
+    cmd->add_option("--time", opt->time,
+                    "Seconds into the scene's keyframes or the model's animation, and the turntable (the same picture as that frame of 'animate')")
+        ->check(CLI::Range(0.0, 1e9))
+        ->capture_default_str();
+    cmd->add_option("--turntable", opt->turntable, "The frame of 'animate --turntable SECONDS' at --time")->check(CLI::Range(1e-3, 1e6));
+    cmd->footer("Examples:\n  softraster render scenes/tri_basic.json -o tri.png\n"
+                "  softraster render duck.glb -o duck.png --size 800x600 --view front\n"
+                "The model options (--size ... --camera) apply to model files only.\n"
+                "The scene format: docs/scene-format.md in the softraster sources.");
+    return [opt, cmd] {
+        opt->model.given = model_options_given(*cmd);
+        return run_render(*opt);
+    };
+}
+
+Run add_showcase(CLI::App& app) {
+    auto opt = std::make_shared<ShowcaseOptions>();
+    CLI::App* cmd = app.add_subcommand("showcase", "Render the built-in showcase scene (needs no files)");
+    cmd->add_option("-o,--output", opt->out, "Output PNG")->capture_default_str();
+    return [opt] { return run_showcase(*opt); };
+}
+
+Run add_bench(CLI::App& app) {
+    auto opt = std::make_shared<BenchOptions>();
+    CLI::App* cmd = app.add_subcommand("bench", "Time frames of a scene: clear, all draws and the MSAA resolve");
+    cmd->add_option("scene", opt->scene, "Scene file (.json)")->required();
+    cmd->add_option("--frames", opt->frames, "Timed frames")->check(CLI::Range(1, 100000))->capture_default_str();
+    cmd->add_option("--warmup", opt->warmup, "Untimed frames first")->check(CLI::Range(0, 100000))->capture_default_str();
+    add_threads_option(*cmd, opt->threads);
+    cmd->add_flag("--json", opt->json, "Print one JSON line instead of text");
+    cmd->add_flag("--orbit", opt->orbit,
+                  "Turn the objects once around in the timed frames (the turntable of 'animate'), each frame set up anew as "
+                  "'view' and 'animate' do, and report frames per second");
+    return [opt] { return run_bench(*opt); };
+}
+
+Run add_thumbnails(CLI::App& app) {
+    auto opt = std::make_shared<ThumbnailsOptions>();
+    CLI::App* cmd = app.add_subcommand("thumbnails", "Draw a thumbnail of every model file in folders, globs and lists");
+    cmd->add_option("inputs", opt->inputs, "Model files, folders (searched recursively by extension) and glob patterns")->required();
+    cmd->add_option("--out", opt->out, "Output folder; pictures mirror the input tree as NAME.EXT.png")->required();
+    cmd->add_option("--jobs", opt->jobs, "Models drawn at once (0: one per core)")->check(CLI::Range(0, 1024))->capture_default_str();
+    cmd->add_option("--timeout", opt->timeout, "Seconds a model may take before it is given up")
+        ->check(CLI::Range(1, 86400))
+        ->capture_default_str();
+    cmd->add_option("--max-memory", opt->max_memory, "Megabytes of address space each model may use before it is given up")
+        ->check(CLI::Range(256, 1 << 22))
+        ->capture_default_str();
+    cmd->add_flag("--skip-existing", opt->skip_existing, "Leave inputs whose picture exists (resume an interrupted run)");
+    cmd->add_option("--report", opt->report, "JSON report of every input and its result (default OUT/thumbnails.json)");
+    cmd->add_flag("-q,--quiet", opt->quiet, "No line per file and no progress bar; failures and the summary still print");
+    add_model_options(*cmd, opt->model, 256);
+    cmd->footer("Example: softraster thumbnails models/ 'more/*.glb' --out thumbs/ --size 256\n"
+                "Exit codes: 0 every file drawn (or skipped), 1 some failed (see the report), 2 bad usage.");
+    return [opt, cmd] {
+        opt->model.given = model_options_given(*cmd);
+        return run_thumbnails(*opt);
+    };
+}
+
+Run add_animate(CLI::App& app) {
+    auto opt = std::make_shared<AnimateOptions>();
+    CLI::App* cmd = app.add_subcommand("animate", "Render a scene's keyframes, a model's animation or a turntable to a video, a GIF or numbered pictures");
+    cmd->add_option("input", opt->input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
+    cmd->add_option("-o,--output", opt->out, "Output by extension: .mp4 (H.264), .webm (VP9), .gif, or numbered pictures such as frames/%04d.png")
+        ->required();
+    cmd->add_option("--turntable", opt->turntable,
+                    "Seconds per full turn of the objects about the vertical axis (default: 4 where nothing else moves)")
+        ->check(CLI::Range(1e-3, 1e6));
+    cmd->add_option("--duration", opt->duration, "Seconds of animation (default: to the last key, else one turn)")->check(CLI::Range(1e-3, 1e6));
+    cmd->add_option("--fps", opt->fps, "Frames per second")->check(CLI::Range(1, 240))->capture_default_str();
+    add_threads_option(*cmd, opt->threads);
+    add_model_options(*cmd, opt->model, 512);
+    cmd->footer("Examples:\n  softraster animate model.glb --turntable 4 -o spin.mp4\n"
+                "  softraster animate model.glb --size 320 --fps 20 -o spin.gif\n"
+                "  softraster animate scene.json --duration 2 -o frames/%04d.png\n"
+                "Frame k shows time k / fps: the same picture as 'render --time k/fps' (with the same --turntable).");
+    return [opt, cmd] {
+        opt->model.given = model_options_given(*cmd);
+        return run_animate(*opt);
+    };
+}
+
+Run add_view(CLI::App& app) {
+    auto opt = std::make_shared<ViewOptions>();
+    CLI::App* cmd = app.add_subcommand("view", "Show a scene or model file in a window: turn it around, change the settings live");
+    cmd->add_option("input", opt->input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
+    cmd->add_option("--screenshots", opt->screenshots, "Folder the screenshot key (p or F12) writes softraster-view-NNN.png into")
+        ->capture_default_str();
+    cmd->add_option("--orbit-frames", opt->orbit_frames,
+                    "Turn the objects once around in N frames as fast as they draw, print the frame rate and quit (compare 'bench --orbit')")
+        ->check(CLI::Range(1, 100000));
+    cmd->add_flag("--terminal", opt->terminal, "Draw in this terminal (24-bit color half blocks) instead of a window: the keys work the same");
+    add_threads_option(*cmd, opt->threads);
+    add_model_options(*cmd, opt->model, 512);
+    cmd->footer("Mouse: drag to turn, right-drag to pan, wheel to zoom. Keys: arrows turn and tilt by 15 degrees, r reset,\n"
+                "s shading, w wireframe, m MSAA, c culling, d depth picture, f texture filter, space pause the keyframes,\n"
+                "p or F12 screenshot, q or Esc quit.\n"
+                "The file reloads when it changes; an error in it is shown and the last good version stays.");
+    return [opt, cmd] {
+        opt->model.given = model_options_given(*cmd);
+        return run_view(*opt);
+    };
+}
+
+}  // namespace
+
+int run_command_line(int argc, char** argv) {
+    CLI::App app{"softraster: a CPU rasterizer that renders scene files (format versions 1 and 2) and model files (glTF, OBJ, FBX, STL...) to pictures"};
+    app.set_version_flag("--version", "softraster " SOFTRASTER_VERSION " (commit " SOFTRASTER_GIT_COMMIT ")");
+    app.require_subcommand(1);
+    app.footer("Run 'softraster COMMAND --help' for a command's options.\n"
+               "Exit codes: 0 success, 1 internal error, 2 bad input (scene, mesh, image or flag).");
+    const Run render = add_render(app);
+    const Run showcase = add_showcase(app);
+    const Run bench = add_bench(app);
+    const Run thumbnails = add_thumbnails(app);
+    const Run animate = add_animate(app);
+    const Run view = add_view(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "softraster: error: " << e.what() << " (see softraster --help)\n";
+        return kExitBadInput;
+    }
+    try {
+        if (app.got_subcommand("render")) return render();
+        if (app.got_subcommand("showcase")) return showcase();
+        if (app.got_subcommand("bench")) return bench();
+        if (app.got_subcommand("thumbnails")) return thumbnails();
+        if (app.got_subcommand("animate")) return animate();
+        if (app.got_subcommand("view")) return view();
+    } catch (const InputError& e) {
+        std::cerr << "softraster: error: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "softraster: internal error: " << e.what() << "\n";
+        return 1;
+    }
+    return 1;
+}
+
+}  // namespace softraster::cli
