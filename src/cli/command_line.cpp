@@ -73,6 +73,15 @@ bool model_options_given(const CLI::App& cmd) {
     return false;
 }
 
+// The run of a command that takes the model options: it also learns whether any was given.
+template <class Options>
+Run model_command(std::shared_ptr<Options> opt, const CLI::App* cmd, int (*run)(const Options&)) {
+    return [opt, cmd, run] {
+        opt->model.given = model_options_given(*cmd);
+        return run(*opt);
+    };
+}
+
 Run add_render(CLI::App& app) {
     auto opt = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand("render", "Render a scene file or a model file to a picture (PNG, TGA, PPM or EXR)");
@@ -97,10 +106,7 @@ Run add_render(CLI::App& app) {
                 "  softraster render duck.glb -o duck.png --size 800x600 --view front\n"
                 "The model options (--size ... --camera) apply to model files only.\n"
                 "The scene format: docs/scene-format.md in the softraster sources.");
-    return [opt, cmd] {
-        opt->model.given = model_options_given(*cmd);
-        return run_render(*opt);
-    };
+    return model_command(opt, cmd, run_render);
 }
 
 Run add_showcase(CLI::App& app) {
@@ -142,10 +148,7 @@ Run add_thumbnails(CLI::App& app) {
     add_model_options(*cmd, opt->model, 256);
     cmd->footer("Example: softraster thumbnails models/ 'more/*.glb' --out thumbs/ --size 256\n"
                 "Exit codes: 0 every file drawn (or skipped), 1 some failed (see the report), 2 bad usage.");
-    return [opt, cmd] {
-        opt->model.given = model_options_given(*cmd);
-        return run_thumbnails(*opt);
-    };
+    return model_command(opt, cmd, run_thumbnails);
 }
 
 Run add_animate(CLI::App& app) {
@@ -165,10 +168,7 @@ Run add_animate(CLI::App& app) {
                 "  softraster animate model.glb --size 320 --fps 20 -o spin.gif\n"
                 "  softraster animate scene.json --duration 2 -o frames/%04d.png\n"
                 "Frame k shows time k / fps: the same picture as 'render --time k/fps' (with the same --turntable).");
-    return [opt, cmd] {
-        opt->model.given = model_options_given(*cmd);
-        return run_animate(*opt);
-    };
+    return model_command(opt, cmd, run_animate);
 }
 
 Run add_view(CLI::App& app) {
@@ -187,10 +187,7 @@ Run add_view(CLI::App& app) {
                 "s shading, w wireframe, m MSAA, c culling, d depth picture, f texture filter, space pause the keyframes,\n"
                 "p or F12 screenshot, q or Esc quit.\n"
                 "The file reloads when it changes; an error in it is shown and the last good version stays.");
-    return [opt, cmd] {
-        opt->model.given = model_options_given(*cmd);
-        return run_view(*opt);
-    };
+    return model_command(opt, cmd, run_view);
 }
 
 }  // namespace

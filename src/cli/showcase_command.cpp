@@ -1,5 +1,4 @@
 #include <chrono>
-#include <memory>
 #include <string>
 
 #include "cli/commands.h"
