@@ -106,7 +106,7 @@ TEST(Binning, EachTriangleInTheTilesItReachesInDrawOrder) {
         for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
         const FaceState faces{round % 3 == 0 ? CullMode::None : CullMode::Back, FrontFace::CCW};
         TriangleBin<1> bin;
-        bin_triangles<1>(indices, post.data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, faces, FlatVaryings{}, grid, bin);
+        bin_triangles(indices, post.data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), faces, FlatVaryings{}, grid, bin);
 
         const Expected e = expected_bins(post, faces, grid);
         size_t listed = 0;
@@ -140,7 +140,7 @@ TEST(Binning, TriangleCoveringNoSampleIsDropped) {
     for (int i = 0; i < 3; ++i) ASSERT_TRUE(finish_vertex(ClipVertex<1>{window_to_clip(p[i].x, p[i].y, W, H), {}}, Viewport{W, H}, v[i]));
     const uint32_t idx[3] = {0, 1, 2};
     TriangleBin<1> bin;
-    bin_triangles<1>(idx, v, ClipPlanes::for_viewport(W, H), Viewport{W, H}, FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
+    bin_triangles(idx, v, ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
                      TileGrid(W, H), bin);
     EXPECT_TRUE(bin.refs.empty());
     EXPECT_EQ(bin.range.count(), 0);

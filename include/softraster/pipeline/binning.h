@@ -177,11 +177,11 @@ void group_by_tile(TriangleBin<N>& bin) {
 }
 
 // The front end's triangle half for one chunk of a draw, stage by stage: primitive assembly
-// and clipping (primitive_assembly.h), culling (culling.h), binning. For a framebuffer of
-// `Samples` samples per pixel: a triangle whose bounds hold no sample is dropped.
-template <int Samples, int N>
+// and clipping (primitive_assembly.h), culling (culling.h), binning. A triangle whose bounds
+// hold no sample of the framebuffer's pattern (its extent `samples`, sample_pattern.h) is dropped.
+template <int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
-                   const Viewport& vp, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
+                   const Viewport& vp, const SampleExtent& samples, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
     bin.pending.clear();
     bin.range = {};
@@ -189,7 +189,7 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
         const ShadedVertex<N>&a = bin.vertex(ia, post), &b = bin.vertex(ib, post), &c = bin.vertex(ic, post);
         const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
         if (!survives_culling(area2, faces)) return;
-        add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, a, b, c, pixel_bounds<Samples>(a, b, c), area2);
+        add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, a, b, c, pixel_bounds(a, b, c, samples), area2);
     });
     group_by_tile(bin);
 }

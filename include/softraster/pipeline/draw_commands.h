@@ -157,8 +157,8 @@ inline constexpr size_t kVertexChunk = 16384;
 inline constexpr size_t kTriangleChunk = 8192;
 
 // Each phase's entry into the CPU dispatch, as a template of what it depends on only: the
-// vertex phase is compiled once per shader, binning once per sample count and varying
-// count, the back ends once per varying layout, whatever the blend mode or the other
+// vertex phase is compiled once per shader, binning once per varying count (the sample
+// pattern's extent a value), the back ends once per varying layout, whatever the blend mode or the other
 // shaders of the same varyings.
 namespace phases {
 template <Shader S>
@@ -168,11 +168,11 @@ void process_vertices(const S& shader, std::span<const typename S::Vertex> verti
         softraster::process_vertices<WideLanes>(shader, vertices, begin, end, target.planes, target.viewport, out);
     });
 }
-template <int Samples, int N>
-void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const DrawTarget& target, FaceState faces,
-                   FlatVaryings flat, TriangleBin<N>& bin) {
+template <int N>
+void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const DrawTarget& target, const SampleExtent& samples,
+                   FaceState faces, FlatVaryings flat, TriangleBin<N>& bin) {
     simd::on_best_path([&]<bool>() {
-        softraster::bin_triangles<Samples>(indices, post, target.planes, target.viewport, faces, flat, target.grid, bin);
+        softraster::bin_triangles(indices, post, target.planes, target.viewport, samples, faces, flat, target.grid, bin);
     });
 }
 template <int Samples, int N>
@@ -234,10 +234,10 @@ public:
         const std::span<const uint32_t> chunk = indices_.subspan(begin * kPer, (end - begin) * kPer);
         const FlatVaryings flat{kFlatVaryings<S>, state_.provoking_vertex == ProvokingVertex::First};
         if constexpr (T == Topology::Triangles) {
-            phases::bin_triangles<BinSamples>(chunk, post_.data(), target, FaceState{state_.cull, state_.front_face}, flat, bins_[c]);
+            phases::bin_triangles(chunk, post_.data(), target, sample_extent<BinSamples>(), FaceState{state_.cull, state_.front_face}, flat, bins_[c]);
         } else {
             const LinePointShape shape{state_.line_width, state_.point_size, target.fb->samples() > 1, state_.front_face};
-            bin_lines_points<BinSamples>(T, chunk, post_.data(), target.planes, target.viewport, shape, flat, target.grid, bins_[c]);
+            bin_lines_points(T, chunk, post_.data(), target.planes, target.viewport, sample_extent<BinSamples>(), shape, flat, target.grid, bins_[c]);
         }
     }
     void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
@@ -296,8 +296,7 @@ template <Shader S, Topology T = Topology::Triangles>
 class GeneralTriangleCommand final : public TriangleFrontEnd<S, kMaxSamples, T> {
     // Binned by the 16-sample pattern's extent, which holds every pattern's (sample_pattern.h):
     // a tile may get a triangle that covers none of its samples (rasterization finds none),
-    // never miss one; and binning, flattened in its AVX2 copy, is compiled for one more sample
-    // count instead of four.
+    // never miss one; and one command type serves every sample count.
     using Base = TriangleFrontEnd<S, kMaxSamples, T>;
     using Base::shader_, Base::state_, Base::triangles;
     using L = LayoutOf<S>;

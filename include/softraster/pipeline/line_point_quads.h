@@ -148,9 +148,9 @@ void point_quad(const WindowVertex<N>& p, const LinePointShape& shape, Emit&& em
 
 // The front end for one chunk of a draw of lines or points: assembly and clipping
 // (primitive_assembly.h), the quads, then binning (binning.h) of their two triangles each.
-template <int Samples, int N>
+template <int N>
 void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
-                      const Viewport& vp, const LinePointShape& shape, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
+                      const Viewport& vp, const SampleExtent& samples, const LinePointShape& shape, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
     bin.pending.clear();
     bin.range = {};
@@ -166,7 +166,7 @@ void bin_lines_points(Topology topology, std::span<const uint32_t> indices, cons
             if (area2 == 0) continue;
             if (!is_front_facing(area2 < 0, shape.front)) std::swap(v[1], v[2]), area2 = -area2;  // lines and points face front
             add_to_tiles(bin, grid, TriangleRef{{v[0] | kClippedVertex, v[1] | kClippedVertex, v[2] | kClippedVertex}},
-                         bin.clipped[v[0]], bin.clipped[v[1]], bin.clipped[v[2]], pixel_bounds<Samples>(p, q, r), area2);
+                         bin.clipped[v[0]], bin.clipped[v[1]], bin.clipped[v[2]], pixel_bounds(p, q, r, samples), area2);
         }
     };
     if (topology == Topology::Points) {

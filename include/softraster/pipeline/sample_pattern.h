@@ -54,14 +54,18 @@ constexpr SampleExtent sample_extent() {
 // may be inside only if 256 i + hi >= m and 256 i + lo <= M, i.e.
 // ceil((m - hi) / 256) <= i <= floor((M - lo) / 256). Empty for most triangles of a mesh
 // finer than the pixels: they fall between the samples and are dropped in binning.
-template <int Samples, class V>
-inline Rect pixel_bounds(const V& a, const V& b, const V& c) {
-    constexpr SampleExtent s = sample_extent<Samples>();
+// (Binning passes the extent as a value: one copy of it serves every sample count.)
+template <class V>
+inline Rect pixel_bounds(const V& a, const V& b, const V& c, const SampleExtent& s) {
     constexpr int kRoundUp = int(kSubpixelOne) - 1;
     return {(std::min({a.X, b.X, c.X}) - s.x_hi + kRoundUp) >> kSubpixelBits,
             (std::min({a.Y, b.Y, c.Y}) - s.y_hi + kRoundUp) >> kSubpixelBits,
             ((std::max({a.X, b.X, c.X}) - s.x_lo) >> kSubpixelBits) + 1,
             ((std::max({a.Y, b.Y, c.Y}) - s.y_lo) >> kSubpixelBits) + 1};
+}
+template <int Samples, class V>
+inline Rect pixel_bounds(const V& a, const V& b, const V& c) {
+    return pixel_bounds(a, b, c, sample_extent<Samples>());
 }
 
 }  // namespace softraster
