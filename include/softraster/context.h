@@ -25,17 +25,12 @@
 
 namespace softraster {
 
-// Calls f.template operator()<Samples, Blended>() with the framebuffer's sample count (1 or
-// 4: the fast back end's) and whether the state blends as compile-time constants, so inner
-// loops never branch on them.
+// Calls f.template operator()<Samples>() with the framebuffer's sample count (1 or 4: the
+// fast back end's) as a compile-time constant, so inner loops never branch on it.
 template <class F>
-void dispatch_samples_blending(int samples, BlendMode blend, F&& f) {
-    auto with_samples = [&]<bool Blended>() {
-        if (samples == 4) f.template operator()<4, Blended>();
-        else f.template operator()<1, Blended>();
-    };
-    if (blend == BlendMode::Opaque) with_samples.template operator()<false>();
-    else with_samples.template operator()<true>();
+void dispatch_samples(int samples, F&& f) {
+    if (samples == 4) f.template operator()<4>();
+    else f.template operator()<1>();
 }
 
 class Context {
@@ -98,8 +93,8 @@ private:
                 std::make_unique<GeneralTriangleCommand<S, T>>(shader, state, fb_->samples(), fb_->color_space(), vertices, indices));
             return;
         }
-        dispatch_samples_blending(fb_->samples(), state.blend, [&]<int Samples, bool Blended>() {
-            commands_.push_back(std::make_unique<TriangleCommand<S, Samples, Blended, T>>(shader, state, vertices, indices));
+        dispatch_samples(fb_->samples(), [&]<int Samples>() {
+            commands_.push_back(std::make_unique<TriangleCommand<S, Samples, T>>(shader, state, vertices, indices));
         });
     }
     void list_commands_by_tile(const TileGrid& grid);

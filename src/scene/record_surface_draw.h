@@ -101,10 +101,8 @@ SOFTRASTER_SURFACE_LAYOUTS(SOFTRASTER_NAME_SURFACE_LAYOUT)
                                           const BinnedTriangles<L::N>&, Framebuffer&, int, int, const Rect&)
 // Every back end of layout L (WHICH: extern to declare them, nothing to define them).
 #define SOFTRASTER_BACK_ENDS(L, WHICH)                                   \
-    WHICH template SOFTRASTER_TILE_BACK_END(L, 1, false);                \
-    WHICH template SOFTRASTER_TILE_BACK_END(L, 1, true);                 \
-    WHICH template SOFTRASTER_TILE_BACK_END(L, 4, false);                \
-    WHICH template SOFTRASTER_TILE_BACK_END(L, 4, true);                 \
+    WHICH template SOFTRASTER_TILE_BACK_END(L, 1);                       \
+    WHICH template SOFTRASTER_TILE_BACK_END(L, 4);                       \
     WHICH template SOFTRASTER_SHADING_PASS(1, L);                        \
     WHICH template SOFTRASTER_SHADING_PASS(4, L);                        \
     WHICH template SOFTRASTER_GENERAL_BACK_END(L);

@@ -76,13 +76,17 @@ TEST(Interpolation, ConstantVaryingsAreExact) {
     for (size_t k = 0; k < 3; ++k)
         ASSERT_TRUE(finish_vertex(ClipVertex<1>{proj * glm::vec4(p[k], 1.0f), {value}}, Viewport{W, H}, v[k]));
     const Rect rect{0, 0, W, H};
-    TriangleSetup<1> exact, divided;
+    TriangleSetup<1> exact, divided, unasked;
     ASSERT_TRUE(setup_coverage<1>(v[0], v[1], v[2], FrontFace::CCW, rect, exact));
     ASSERT_TRUE(setup_coverage<1>(v[0], v[1], v[2], FrontFace::CCW, rect, divided));
+    ASSERT_TRUE(setup_coverage<1>(v[0], v[1], v[2], FrontFace::CCW, rect, unasked));
+    exact.options.find_constant = true;  // (a blended draw's)
     setup_planes</*Flat=*/0, /*Constant=*/true>(exact);
     setup_planes</*Flat=*/0, /*Constant=*/false>(divided);
+    setup_planes</*Flat=*/0, /*Constant=*/true>(unasked);  // compiled to look, but an opaque draw does not ask
     EXPECT_TRUE(exact.constant_varyings);
     EXPECT_FALSE(divided.constant_varyings);
+    EXPECT_FALSE(unasked.constant_varyings);
     int rounded = 0;
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {

@@ -22,11 +22,14 @@ struct BinnedTriangles {
 // Calls f(setup, ordinal) for each of the draw's triangles in tile (tx, ty), whose pixels
 // are `rect`, in draw order; the ordinal counts them (hidden_surface_removal.h names a
 // triangle by it). Without Planes, the setup has its coverage only (f makes the planes
-// when it needs them).
+// when it needs them). With Constant, the planes look for constant varyings if
+// find_constant (setup_planes).
 template <int Samples, bool Planes = true, uint64_t Flat = 0, bool Constant = false, int N, class F>
-void for_each_triangle_setup(const BinnedTriangles<N>& draw, const RenderState& state, int tx, int ty, const Rect& rect, F&& f) {
+void for_each_triangle_setup(const BinnedTriangles<N>& draw, const RenderState& state, int tx, int ty, const Rect& rect, F&& f,
+                             bool find_constant = false) {
     TriangleSetup<N> setup;
     setup.options = PlaneOptions::of(state);
+    setup.options.find_constant = Constant && find_constant;
     const FrontFace front = state.front_face;
     uint32_t ordinal = 0;
     // Setup reads the window position and varyings of three vertices anywhere in the

@@ -9,8 +9,8 @@
 //      rasterization, depth test, fragment shading, output merge.
 // A command is a type-erased draw: one virtual call per chunk or per tile. Vertex processing
 // is specialized for the shader; everything per pixel for the shader's varying layout
-// (shader_layout.h), the sample count and whether the draw blends, with the shader's
-// fragment code called out of line a batch at a time. Each phase runs in the copy for this
+// (shader_layout.h) and the sample count, with the shader's fragment code called out of
+// line a batch at a time (whether the draw blends is a per-draw value, tile_back_end.h). Each phase runs in the copy for this
 // CPU (simd.h, on_best_path).
 #pragma once
 #include <algorithm>
@@ -253,7 +253,7 @@ protected:
     std::vector<TriangleBin<N>> bins_;
 };
 
-template <Shader S, int Samples, bool Blended, Topology T = Topology::Triangles>
+template <Shader S, int Samples, Topology T = Topology::Triangles>
 class TriangleCommand final : public TriangleFrontEnd<S, Samples, T> {
     using Base = TriangleFrontEnd<S, Samples, T>;
     using Base::shader_, Base::state_, Base::triangles;
@@ -263,24 +263,24 @@ public:
     TriangleCommand(const S& shader, const RenderState& state, std::span<const typename S::Vertex> vertices,
                     std::span<const uint32_t> indices)
         : Base(shader, state, vertices, indices), layout_(layout_shader(shader_)) {
-        this->allows_hsr_ = L::kPure && !Blended && softraster::allows_hidden_surface_removal(state_);
+        this->allows_hsr_ = L::kPure && softraster::allows_hidden_surface_removal(state_);  // (opaque draws only)
     }
 
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
         const Rect rect = this->scissored(tile_rect, state_);
         if (rect.empty()) return 0;
-        const TileBackEnd<L, Samples, Blended> back_end{layout_, state_, DepthStencilTest(DepthTest(state_)), BlendSettings(state_, target.fb->color_space()),
+        const TileBackEnd<L, Samples> back_end{layout_, state_, DepthStencilTest(DepthTest(state_)), BlendSettings(state_, target.fb->color_space()),
                                                          triangles(), *target.fb};
         return phases::draw_tile(back_end, target.grid.tile_x(tile), target.grid.tile_y(tile), rect);
     }
 
     void visibility_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, uint32_t* owners) override {
-        if constexpr (!Blended && L::kPure)
+        if constexpr (L::kPure)
             phases::visibility_pass<Samples>(triangles(), state_, *target.fb, target.grid.tile_x(tile),
                                              target.grid.tile_y(tile), rect, draw, owners);
     }
     uint64_t shading_pass(int tile, const Rect& rect, const DrawTarget& target, uint32_t draw, const uint32_t* owners) override {
-        if constexpr (!Blended && L::kPure)
+        if constexpr (L::kPure)
             return phases::shading_pass<Samples>(layout_, triangles(), state_, *target.fb, target.grid.tile_x(tile),
                                                  target.grid.tile_y(tile), rect, draw, owners);
         return 0;
@@ -314,10 +314,10 @@ public:
             // Single-sampled and opaque (or writing no color), with nothing after the shader
             // that could drop a fragment: the fast back end (its fragment queue for small
             // triangles, groups of eight for big ones), with the stencil test where it tests
-            // depth. Blended stencil draws and partial color masks stay pixel by pixel below:
-            // one more copy of the fast back end per layout would cost build time for rare state.
+            // depth. Blended stencil draws and partial color masks, rare state, stay pixel by
+            // pixel below.
             if (ops_.samples == 1 && ops_.early && (ops_.blend.replace || !ops_.blend.color_mask)) {
-                const TileBackEnd<L, 1, /*Blended=*/false> back_end{layout_, state_, ops_.tests, ops_.blend, triangles(), *target.fb};
+                const TileBackEnd<L, 1> back_end{layout_, state_, ops_.tests, ops_.blend, triangles(), *target.fb};
                 return phases::draw_tile(back_end, tx, ty, rect);
             }
         }

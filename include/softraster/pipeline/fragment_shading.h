@@ -56,21 +56,28 @@ template <bool Blended>
 void merge_groups_generic(const BlendSettings& blend, Framebuffer& fb, const GroupPlaces& p, const simd::i8* pass);
 
 // Shades the pending groups with one call (`shade`: the layout's groups or quad_rows entry),
-// then merges them and empties the list.
-template <bool Blended, bool WideLanes, int N>
+// then merges them (the opaque or the blending merge, chosen once per batch) and empties
+// the list.
+template <bool WideLanes, int N>
 inline void shade_and_merge(void (*shade)(const void*, FragmentGroups<N>&), const void* shader, const BlendSettings& blend, Framebuffer& fb,
                             PendingGroups<N>& p) {
     if (p.empty()) return;
     shade(shader, p.batch);
-    if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) merge_groups_wide<Blended>(blend, fb, p.batch, p.pass.data());
-    else merge_groups_generic<Blended>(blend, fb, p.batch, p.pass.data());
+    const bool blended = blend.mode != BlendMode::Opaque;
+    if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) {
+        if (blended) merge_groups_wide<true>(blend, fb, p.batch, p.pass.data());
+        else merge_groups_wide<false>(blend, fb, p.batch, p.pass.data());
+    } else {
+        if (blended) merge_groups_generic<true>(blend, fb, p.batch, p.pass.data());
+        else merge_groups_generic<false>(blend, fb, p.batch, p.pass.data());
+    }
     p.batch.count = 0;
 }
 
 // One fragment of pixel (x, y) whose samples `covered` lie at depths z: the depth test
 // (depth_stencil.h), the shader with the varyings make_varyings() returns, then the depth
 // write and the output merge for the samples that passed, unless the shader discarded.
-template <int Samples, bool Blended, class DepthStencil, int N, class MakeVaryings>
+template <int Samples, class DepthStencil, int N, class MakeVaryings>
 inline void shade_fragment(const FragmentCalls<N>& calls, const void* shader, const DepthStencil& depth, const BlendSettings& blend,
                            Framebuffer& fb, int x, int y, unsigned covered, const float* z, float center_z, bool front_facing,
                            MakeVaryings&& make_varyings, uint64_t& shaded) {
@@ -82,7 +89,9 @@ inline void shade_fragment(const FragmentCalls<N>& calls, const void* shader, co
     glm::vec4 color;
     if (!calls.pixel(shader, make_varyings(), frag, color)) return;
     depth.template write_pixel<Samples>(fb.depth_data() + base, pass, z);
-    if (blend.color_mask) merge_fragment<Samples, Blended>(blend, fb.color_data() + base, pass, color);
+    if (!blend.color_mask) return;
+    if (blend.mode == BlendMode::Opaque) merge_fragment<Samples, false>(blend, fb.color_data() + base, pass, color);
+    else merge_fragment<Samples, true>(blend, fb.color_data() + base, pass, color);
 }
 
 }  // namespace softraster

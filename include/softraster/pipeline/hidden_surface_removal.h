@@ -125,10 +125,10 @@ uint64_t shading_pass(const LayoutShader<L>& shader, const BinnedTriangles<L::N>
                     const f8 i = to_float(kLaneIndex) + float(x - setup.origin_x);
                     shaded += unsigned(__builtin_popcount(bits(mine)));
                     groups.add(y, x, mine, interpolate_depth(setup, i, j)) = interpolate_varyings<L>(setup, i, j);
-                    if (groups.full()) shade_and_merge</*Blended=*/false, WideLanes>(calls.groups, shader.self, blend, fb, groups);
+                    if (groups.full()) shade_and_merge<WideLanes>(calls.groups, shader.self, blend, fb, groups);
                 });
             });
-            shade_and_merge</*Blended=*/false, WideLanes>(calls.groups, shader.self, blend, fb, groups);
+            shade_and_merge<WideLanes>(calls.groups, shader.self, blend, fb, groups);
         } else {
             rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
                 const uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;

@@ -8,8 +8,9 @@
 // (Context::execute); runs of opaque draws with heavy overdraw take two passes instead
 // (hidden_surface_removal.h).
 //
-// It is compiled per varying layout (shader_layout.h), sample count and blending, not per
-// shader: the shader's fragment code is called out of line, a batch of groups at a time.
+// It is compiled per varying layout (shader_layout.h) and sample count, not per shader or
+// blend mode: the shader's fragment code is called out of line, a batch of groups at a
+// time, and whether the draw blends is chosen per batch (shade_and_merge) or per triangle.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -28,18 +29,20 @@
 
 namespace softraster {
 
-template <class L, int Samples, bool Blended>
+template <class L, int Samples>
 struct TileBackEnd {
     static constexpr int N = L::N;
     static constexpr uint64_t Flat = L::kFlat;
+    bool blended() const { return blend.mode != BlendMode::Opaque; }
     // Blended draws of shaders that read varyings alone shade a triangle whose varyings are
     // constant once (draw_groups); setup looks for those only in them (setup_planes).
-    static constexpr bool kConstant = Blended && L::kVaryingsOnly;
+    static constexpr bool kConstant = L::kVaryingsOnly;
+    bool find_constant() const { return kConstant && blended(); }
     // Single-sampled opaque draws may test stencil too: general_back_end.h sends those that
     // do here when nothing after the shader can drop a fragment. They run the fragment queue
     // or EightPixelGroups, with the stencil test where depth is tested: a choice made per
     // draw, not another copy of the back end per layout.
-    static constexpr bool kMayStencil = Samples == 1 && !Blended;
+    static constexpr bool kMayStencil = Samples == 1;
     bool stencil() const { return kMayStencil && tests.stencil; }
 
     // By value, not by reference: the tile loops read them after every framebuffer store,
@@ -67,9 +70,9 @@ struct TileBackEnd {
     //   halves and the queue's lane shuffles are slow, the other two ways, with the same
     //   pixels, were faster (docs/performance.md: the fragment queue, and "Build time").
     enum class Strategy { FragmentQueue, EightPixelGroups, PixelByPixel };
-    static constexpr bool kQueueable = L::kBatch && L::kPure && !Blended;
+    static constexpr bool kQueueable = L::kBatch && L::kPure;
     Strategy strategy() const {
-        if (kQueueable && state.color_write && blend.color_mask) return Strategy::FragmentQueue;
+        if (kQueueable && !blended() && state.color_write && blend.color_mask) return Strategy::FragmentQueue;
         return Samples == 1 && L::kBatch ? Strategy::EightPixelGroups : Strategy::PixelByPixel;
     }
 
@@ -86,12 +89,12 @@ struct TileBackEnd {
             if (strategy() == Strategy::FragmentQueue) {
                 static thread_local FragmentQueue<N, Samples> queue;
                 queue.start(calls.groups, shader.self, fb);
-                for_each_triangle_setup<Samples, /*Planes=*/false, Flat, kConstant>(triangles, state, tx, ty, rect,
-                                                                   [&](TriangleSetup<N>& setup, uint32_t) {
+                // (Opaque: no constant varyings sought, see kConstant.)
+                for_each_triangle_setup<Samples, /*Planes=*/false, Flat>(triangles, state, tx, ty, rect, [&](TriangleSetup<N>& setup, uint32_t) {
                     if constexpr (Samples == 1) {  // (else draw_groups would be compiled, never to run)
                         if (is_large(setup.bounds)) {
                             queue.flush();
-                            setup_planes<Flat, kConstant>(setup);
+                            setup_planes<Flat>(setup);
                             shaded += draw_groups<WideLanes>(calls, setup, pending);
                             return;
                         }
@@ -110,7 +113,7 @@ struct TileBackEnd {
                 }
             }
             shaded += draw_pixels(calls, setup);
-        });
+        }, find_constant());
         return shaded;
     }
 
@@ -123,7 +126,7 @@ struct TileBackEnd {
         uint64_t shaded = 0;
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
             const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
-            shade_fragment<Samples, Blended>(calls, shader.self, tests.depth, blend, fb, px.x, px.y, px.mask, px.z.data(),
+            shade_fragment<Samples>(calls, shader.self, tests.depth, blend, fb, px.x, px.y, px.mask, px.z.data(),
                                              interpolate_depth(t, i, j), t.front_facing,
                                              [&] { return interpolate_varyings<L, kConstant>(t, i, j); }, shaded);
         });
@@ -191,7 +194,7 @@ struct TileBackEnd {
         // until the second's comes. Each pixel's test, color and merge are its own, so the
         // order between the rows changes nothing.
         bool pair_rows = false;
-        if constexpr (L::kQuadRows) pair_rows = !(Blended && blend.mode == BlendMode::Custom) && !constant && blend.color_mask && !stencil();
+        if constexpr (L::kQuadRows) pair_rows = blend.mode != BlendMode::Custom && !constant && blend.color_mask && !stencil();
         Span held{-1, 0, 0};  // a quads' first row, waiting for the second
         rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
             const Span span{y, x_begin, x_end};
@@ -215,9 +218,9 @@ struct TileBackEnd {
         });
         if constexpr (L::kQuadRows) {
             if (held.y >= 0) shaded += draw_rows<WideLanes>(rows, held, {});
-            shade_and_merge<Blended, WideLanes>(calls.quad_rows, shader.self, blend, fb, pairs);
+            shade_and_merge<WideLanes>(calls.quad_rows, shader.self, blend, fb, pairs);
         }
-        shade_and_merge<Blended, WideLanes>(calls.groups, shader.self, blend, fb, groups);
+        shade_and_merge<WideLanes>(calls.groups, shader.self, blend, fb, groups);
         return shaded;
     }
 
@@ -262,7 +265,7 @@ struct TileBackEnd {
         // framebuffer's stores could alias anything a pointer or reference reaches.)
         Rgba8* const color_row = fb.color_data() + fb.sample_index(0, span.y);
         const DepthRow row = depth_row(span.y);
-        const bool constant = r.constant != nullptr, custom_blend = Blended && blend.mode == BlendMode::Custom;
+        const bool constant = r.constant != nullptr, custom_blend = blend.mode == BlendMode::Custom;
         const std::array<f8, 4> constant_rgba = constant ? *r.constant : std::array<f8, 4>{};
         RowGroups custom;
         i8 constant_packed{};
@@ -275,11 +278,11 @@ struct TileBackEnd {
             shaded += unsigned(__builtin_popcount(bits(pass)));
             if (constant) {
                 if (custom_blend) custom.add(x, pass, constant_packed);
-                else blend_group<Blended>(blend, color_row, x, width, pass, constant_rgba);
+                else blend_group</*Blended=*/true>(blend, color_row, x, width, pass, constant_rgba);  // (only blended draws look)
                 return;
             }
             groups.add(span.y, x, pass, z) = interpolate_varyings<L, kConstant>(t, i, j);
-            if (groups.full()) shade_and_merge<Blended, WideLanes>(r.calls.groups, shader.self, blend, fb, groups);
+            if (groups.full()) shade_and_merge<WideLanes>(r.calls.groups, shader.self, blend, fb, groups);
         });
         if (custom.count > 0) blend_row<WideLanes>(blend, color_row, width, custom);
         return shaded;
@@ -310,13 +313,13 @@ struct TileBackEnd {
                 if (any(pass[0]) && any(pass[1])) {
                     std::array<f8, N>& top = pairs.add(first.y, x, pass[0], z[0]);
                     interpolate_quad_row_pair<L>(t, i, j0, top, pairs.add(second.y, x, pass[1], z[1]));
-                    if (pairs.full()) shade_and_merge<Blended, WideLanes>(r.calls.quad_rows, shader.self, blend, fb, pairs);
+                    if (pairs.full()) shade_and_merge<WideLanes>(r.calls.quad_rows, shader.self, blend, fb, pairs);
                     return;
                 }
                 for (int k = 0; k < 2; ++k) {
                     if (!any(pass[k])) continue;
                     groups.add(first.y + k, x, pass[k], z[k]) = interpolate_varyings<L, kConstant>(t, i, k ? j1 : j0);
-                    if (groups.full()) shade_and_merge<Blended, WideLanes>(r.calls.groups, shader.self, blend, fb, groups);
+                    if (groups.full()) shade_and_merge<WideLanes>(r.calls.groups, shader.self, blend, fb, groups);
                 }
             });
         }
@@ -333,14 +336,14 @@ struct TileBackEnd {
         // The triangle may come with its coverage only: its planes are made at its first
         // covered group, so a triangle that covers no sample costs only its edge functions.
         auto need_planes = [&] {
-            if (!t.has_planes) setup_planes<Flat, kConstant>(t);
+            if (!t.has_planes) setup_planes<Flat>(t);
         };
         // Queues the pixels of group [x, x + 8) of row y set in `pass`, writing `samples` of each.
         auto queue_group = [&](int y, int x, i8 pass, i8 samples) {
             const f8 i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
             queued += unsigned(__builtin_popcount(bits(pass)));
             const i8 pixel = (splat_i(int32_t(fb.sample_index(0, y))) + (kLaneIndex + x) * Samples);
-            queue.push(pass, interpolate_depth(t, i, j), interpolate_varyings<L, kConstant>(t, i, j), pixel, samples, t.front_facing);
+            queue.push(pass, interpolate_depth(t, i, j), interpolate_varyings<L>(t, i, j), pixel, samples, t.front_facing);
         };
         if constexpr (Samples == 1) {
             auto test = [&](int y, int x, i8 covered) {
@@ -387,7 +390,7 @@ struct TileBackEnd {
                 if (!pass) return;
                 const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
                 ++queued;
-                queue.push(interpolate_depth(t, i, j), interpolate_varyings<L, kConstant>(t, i, j), int32_t(base), pass, t.front_facing);
+                queue.push(interpolate_depth(t, i, j), interpolate_varyings<L>(t, i, j), int32_t(base), pass, t.front_facing);
             });
         }
         return queued;

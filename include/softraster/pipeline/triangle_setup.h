@@ -62,6 +62,7 @@ struct PlaneOptions {
     float offset_factor = 0.0f, offset_units = 0.0f;
     bool noperspective = false;
     bool provoking_first = false;  // flat varyings come from the first corner, not the last
+    bool find_constant = false;    // look for constant varyings (setup_planes; blended draws only)
     static PlaneOptions of(const RenderState& st) {
         return {st.polygon_offset_factor, st.polygon_offset_units, st.noperspective, st.provoking_vertex == ProvokingVertex::First};
     }
@@ -135,11 +136,12 @@ bool constant_varyings(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, con
 
 // Makes the interpolation planes of a triangle whose coverage is set up. Flat: the shader's
 // flat varyings (shader.h), whose planes are the provoking vertex's value, constant.
-// Constant: look for constant varyings (constant_varyings above). A draw decides once, at
-// compile time, and every path of the draw interpolates with the same choice
-// (interpolate_perspective), so a pixel's value never depends on the path that drew it.
-// Only blended draws whose shaders read varyings alone look (tile_back_end.h): they shade
-// such a triangle once; elsewhere the test and its branch would cost without a gain.
+// Constant: compiled to look for constant varyings (constant_varyings above), which it does
+// when the draw asks (options.find_constant). A draw decides once, and every path of the
+// draw interpolates with the same choice (interpolate_perspective), so a pixel's value never
+// depends on the path that drew it. Only blended draws whose shaders read varyings alone
+// look (tile_back_end.h): they shade such a triangle once; elsewhere the test and its
+// branch would cost without a gain.
 template <uint64_t Flat = 0, bool Constant = false, int N>
 void setup_planes(TriangleSetup<N>& t) {
     // Plane gradients by Cramer's rule on the two edge vectors from vertex 0, in double,
@@ -179,7 +181,7 @@ void setup_planes(TriangleSetup<N>& t) {
     // normal, one color) has them everywhere: (a/w)/(1/w) = a exactly in real numbers, and
     // taking a itself avoids the rounding of that division (and the division). A smooth
     // mesh's triangle usually differs in its first varying: the search stops there.
-    if constexpr (Constant) {
+    if (Constant && t.options.find_constant) {
         t.constant_varyings = constant_varyings<Flat>(v0, v1, v2);
         if (t.constant_varyings) {
             t.inv_w = Plane{1.0f, 0.0f, 0.0f};
