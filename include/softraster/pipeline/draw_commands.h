@@ -178,7 +178,9 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
 template <int Samples, int N>
 void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& state, Framebuffer& fb, int tx, int ty,
                      const Rect& rect, uint32_t draw, uint32_t* owners) {
-    simd::on_best_path([&]<bool>() { softraster::visibility_pass<Samples>(triangles, state, fb, tx, ty, rect, draw, owners); });
+    simd::on_best_path([&]<bool WideLanes>() {
+        softraster::visibility_pass<Samples, WideLanes>(triangles, state, fb, tx, ty, rect, draw, owners);
+    });
 }
 // The tile back end and the shading pass once per back end, whatever the topology the
 // command was drawn with (lines and points draw the triangles of their quads).

@@ -68,35 +68,55 @@ HiddenSurfaceRun hidden_surface_run(std::span<const DrawPtr> draws, size_t first
     return {end, area >= kOverdrawForHiddenSurfaceRemoval * tile_area};
 }
 
-// Pass 1: depth test and write, and the owner of every sample that passes. `owners` holds
-// the tile's samples, row by row (kTileSize pixels a row, Samples per pixel).
-template <int Samples, int N>
+// Pass 1 for one triangle: depth test and write, and `me` as the owner of every sample
+// that passes. `owners` holds the tile's samples, row by row (kTileSize pixels a row,
+// Samples per pixel). It needs the triangle's edges and depth only, so it is compiled once
+// per sample count and CPU path (simd.h) for every varying count.
+template <int Samples>
+void visible_samples(const TriangleEdges& t, const DepthTest& depth, Framebuffer& fb, const Rect& rect, uint32_t me, uint32_t* owners) {
+    const int width = fb.width();
+    if constexpr (Samples == 1) {  // eight pixels at a time
+        using namespace simd;
+        rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
+            int32_t* owner = reinterpret_cast<int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
+            const f8 j = splat(float(y - t.origin_y));
+            for_each_group(x_begin, x_end, [&](int x, i8 covered) {
+                const f8 z = interpolate_depth(t, to_float(kLaneIndex) + float(x - t.origin_x), j);
+                const i8 pass = depth.test_group(fb.depth_data() + fb.sample_index(0, y), x, width, z, covered);
+                const int ox = x - rect.x0, ow = width - rect.x0;
+                store_group(owner, ox, ow, select(pass, splat_i(int32_t(me)), load_group<i8>(owner, ox, ow)));
+            });
+        });
+    } else {
+        rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
+            uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
+            const unsigned pass = depth.template test_and_write_pixel<Samples>(fb.depth_data() + fb.sample_index(px.x, px.y), px.mask, px.z.data());
+            for (int s = 0; s < Samples; ++s)
+                if (pass & (1u << s)) owner[s] = me;
+        });
+    }
+}
+template <int Samples>
+[[gnu::noinline]] SOFTRASTER_AVX2_TARGET void visible_samples_wide(const TriangleEdges& t, const DepthTest& depth, Framebuffer& fb,
+                                                                   const Rect& rect, uint32_t me, uint32_t* owners) {
+    visible_samples<Samples>(t, depth, fb, rect, me, owners);
+}
+template <int Samples>
+[[gnu::noinline]] void visible_samples_generic(const TriangleEdges& t, const DepthTest& depth, Framebuffer& fb, const Rect& rect,
+                                               uint32_t me, uint32_t* owners) {
+    visible_samples<Samples>(t, depth, fb, rect, me, owners);
+}
+
+// Pass 1 for a draw's triangles in the tile: each one's coverage and depth plane (its
+// varyings' planes are not needed), then its visible samples.
+template <int Samples, bool WideLanes, int N>
 void visibility_pass(const BinnedTriangles<N>& triangles, const RenderState& state, Framebuffer& fb, int tx, int ty,
                      const Rect& rect, uint32_t draw, uint32_t* owners) {
     const DepthTest depth(state);
-    const int width = fb.width();
-    for_each_triangle_setup<Samples>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
-        const uint32_t me = owner_id(draw, id);
-        if constexpr (Samples == 1) {  // eight pixels at a time
-            using namespace simd;
-            rasterize_spans(setup, setup.bounds, [&](int y, int x_begin, int x_end) {
-                int32_t* owner = reinterpret_cast<int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
-                const f8 j = splat(float(y - setup.origin_y));
-                for_each_group(x_begin, x_end, [&](int x, i8 covered) {
-                    const f8 z = interpolate_depth(setup, to_float(kLaneIndex) + float(x - setup.origin_x), j);
-                    const i8 pass = depth.test_group(fb.depth_data() + fb.sample_index(0, y), x, width, z, covered);
-                    const int ox = x - rect.x0, ow = width - rect.x0;
-                    store_group(owner, ox, ow, select(pass, splat_i(int32_t(me)), load_group<i8>(owner, ox, ow)));
-                });
-            });
-        } else {
-            rasterize_triangle<Samples>(setup, setup.bounds, [&](const CoveredPixel<Samples>& px) {
-                uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
-                const unsigned pass = depth.template test_and_write_pixel<Samples>(fb.depth_data() + fb.sample_index(px.x, px.y), px.mask, px.z.data());
-                for (int s = 0; s < Samples; ++s)
-                    if (pass & (1u << s)) owner[s] = me;
-            });
-        }
+    for_each_triangle_setup<Samples, /*Planes=*/false>(triangles, state, tx, ty, rect, [&](TriangleSetup<N>& setup, uint32_t id) {
+        setup_depth_plane(setup, plane_basis(setup));
+        if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) visible_samples_wide<Samples>(setup, depth, fb, rect, owner_id(draw, id), owners);
+        else visible_samples_generic<Samples>(setup, depth, fb, rect, owner_id(draw, id), owners);
     });
 }
 

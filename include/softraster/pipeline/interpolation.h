@@ -15,8 +15,8 @@
 namespace softraster {
 
 // (i, j) as float for one point, or as simd::f8 for eight: the same arithmetic, lane by lane.
-template <int N, class T>
-inline T interpolate_depth(const TriangleSetup<N>& t, T i, T j) {
+template <class T>
+inline T interpolate_depth(const TriangleEdges& t, T i, T j) {
     return t.z.at(i, j);
 }
 

@@ -51,8 +51,8 @@ inline Span edge_span(int64_t e, int64_t step, int n) {
 // Row by row: the edge functions give, for each sample position, the exact span of pixels
 // inside all three edges (three integer divisions per row and sample), so the pixels in
 // between need no test at all.
-template <int Samples, int N, class OnPixel>
-void rasterize_triangle(const TriangleSetup<N>& t, const Rect& rect, OnPixel&& on_pixel) {
+template <int Samples, class OnPixel>
+void rasterize_triangle(const TriangleEdges& t, const Rect& rect, OnPixel&& on_pixel) {
     const int x0 = std::max(rect.x0, t.bounds.x0), x1 = std::min(rect.x1, t.bounds.x1);
     const int y0 = std::max(rect.y0, t.bounds.y0), y1 = std::min(rect.y1, t.bounds.y1);
     if (x0 >= x1 || y0 >= y1) return;
@@ -112,8 +112,8 @@ void rasterize_triangle(const TriangleSetup<N>& t, const Rect& rect, OnPixel&& o
 
 // Single-sampled: calls on_span(y, x_begin, x_end) for each row's run of covered pixels
 // (a triangle is convex, so a row's covered pixels are contiguous).
-template <int N, class OnSpan>
-void rasterize_spans(const TriangleSetup<N>& t, const Rect& rect, OnSpan&& on_span) {
+template <class OnSpan>
+void rasterize_spans(const TriangleEdges& t, const Rect& rect, OnSpan&& on_span) {
     const int x0 = std::max(rect.x0, t.bounds.x0), x1 = std::min(rect.x1, t.bounds.x1);
     const int y0 = std::max(rect.y0, t.bounds.y0), y1 = std::min(rect.y1, t.bounds.y1);
     if (x0 >= x1 || y0 >= y1) return;

@@ -22,8 +22,7 @@ namespace softraster {
 inline constexpr int64_t kSmallEdge = int64_t(64) * kSubpixelOne;
 inline constexpr int32_t kSubpixelOne32 = int32_t(kSubpixelOne);
 
-template <int N>
-inline bool has_small_edges(const TriangleSetup<N>& t) {
+inline bool has_small_edges(const TriangleEdges& t) {
     for (size_t i = 0; i < 3; ++i)
         if (std::llabs(t.A[i]) > kSmallEdge || std::llabs(t.B[i]) > kSmallEdge) return false;
     return true;
@@ -58,8 +57,8 @@ struct GroupSamples<4> {
 // Calls on_group(y, x, covered) for each group of eight pixels [x, x + 8) (x a multiple of
 // eight) in a row of t.bounds that covers any sample, `covered` holding a lane mask per
 // vector of GroupSamples<Samples>. Needs has_small_edges(t).
-template <int Samples, int N, class OnGroup>
-void rasterize_small(const TriangleSetup<N>& t, OnGroup&& on_group) {
+template <int Samples, class OnGroup>
+void rasterize_small(const TriangleEdges& t, OnGroup&& on_group) {
     using namespace simd;
     using G = GroupSamples<Samples>;
     constexpr int V = G::kVectors;

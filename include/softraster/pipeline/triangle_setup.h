@@ -68,13 +68,25 @@ struct PlaneOptions {
     }
 };
 
-template <int N>
-struct TriangleSetup {
+// What rasterization (rasterization.h) and the depth test need of a set-up triangle,
+// whatever its varyings: its edges, bounds and facing, and its depth plane. The loops that
+// use nothing more take this part alone, so they are compiled once for every varying count
+// (the visibility pass, hidden_surface_removal.h).
+struct TriangleEdges {
     std::array<int64_t, 3> A, B, C;  // E_i(p) = A_i p.x + B_i p.y + C_i, p in 24.8 fixed point
     std::array<int64_t, 3> bias;     // 0 on top-left edges, -1 elsewhere: inside iff E_i + bias_i >= 0
     Rect bounds;                     // pixels to visit: the triangle's bounds within the tile
     int origin_x = 0, origin_y = 0;  // the pixel the planes are relative to
     bool front_facing = true;
+    DepthPlane z;                    // window depth (setup_depth_plane)
+
+    int64_t edge(int i, int64_t px, int64_t py) const {
+        return A[size_t(i)] * px + B[size_t(i)] * py + C[size_t(i)];
+    }
+};
+
+template <int N>
+struct TriangleSetup : TriangleEdges {
     std::array<const ShadedVertex<N>*, 3> corner{};  // clockwise on screen
     const ShadedVertex<N>* provoking = nullptr;     // the corner flat varyings come from
     // Interpolation planes, made by setup_planes. A draw may make them only once the triangle
@@ -86,13 +98,8 @@ struct TriangleSetup {
     // stays false. (Beside has_planes, in its padding: the struct keeps its size.)
     bool constant_varyings = false;
     PlaneOptions options;        // set per draw, before setup_coverage
-    DepthPlane z;                // window depth
     Plane inv_w;                 // 1/w
     std::array<Plane, N> var_w;  // varying / w
-
-    int64_t edge(int i, int64_t px, int64_t py) const {
-        return A[size_t(i)] * px + B[size_t(i)] * py + C[size_t(i)];
-    }
 };
 
 // Sets up the coverage of triangle (v0, v1, v2), already culled and known to have non-zero
@@ -134,36 +141,39 @@ bool constant_varyings(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, con
     return true;
 }
 
-// Makes the interpolation planes of a triangle whose coverage is set up. Flat: the shader's
-// flat varyings (shader.h), whose planes are the provoking vertex's value, constant.
-// Constant: compiled to look for constant varyings (constant_varyings above), which it does
-// when the draw asks (options.find_constant). A draw decides once, and every path of the
-// draw interpolates with the same choice (interpolate_perspective), so a pixel's value never
-// depends on the path that drew it. Only blended draws whose shaders read varyings alone
-// look (tile_back_end.h): they shade such a triangle once; elsewhere the test and its
-// branch would cost without a gain.
-template <uint64_t Flat = 0, bool Constant = false, int N>
-void setup_planes(TriangleSetup<N>& t) {
-    // Plane gradients by Cramer's rule on the two edge vectors from vertex 0, in double,
-    // then each plane's value at the center of the rectangle's first pixel.
-    const ShadedVertex<N>&v0 = *t.corner[0], &v1 = *t.corner[1], &v2 = *t.corner[2];
-    const WindowPosition &w0 = v0.window, &w1 = v1.window, &w2 = v2.window;
+// A triangle's plane basis: plane gradients by Cramer's rule on the two edge vectors from
+// corner 0, in double, and the offset from that corner of the center of the rectangle's
+// first pixel (the planes' origin).
+struct PlaneBasis {
+    double x1, y1, x2, y2, inv_det, ox, oy;
+    // The plane of the values a0, a1, a2 at the corners: its value at the origin pixel and its
+    // gradients, in double.
+    std::array<double, 3> at_origin(double a0, double a1, double a2) const {
+        const double d1 = a1 - a0, d2 = a2 - a0;
+        const double dadx = (d1 * y2 - d2 * y1) * inv_det, dady = (d2 * x1 - d1 * x2) * inv_det;
+        return {a0 + dadx * ox + dady * oy, dadx, dady};
+    }
+    Plane plane(double a0, double a1, double a2) const {
+        const auto [value, dadx, dady] = at_origin(a0, a1, a2);
+        return Plane{float(value), float(dadx), float(dady)};
+    }
+};
+template <int N>
+PlaneBasis plane_basis(const TriangleSetup<N>& t) {
+    const WindowPosition &w0 = t.corner[0]->window, &w1 = t.corner[1]->window, &w2 = t.corner[2]->window;
     const double x1 = double(w1.x) - w0.x, y1 = double(w1.y) - w0.y;
     const double x2 = double(w2.x) - w0.x, y2 = double(w2.y) - w0.y;
     const double det = x1 * y2 - x2 * y1;
     const double inv_det = det != 0.0 ? 1.0 / det : 0.0;  // unsnapped sliver: flat planes
-    const double ox = t.origin_x + 0.5 - w0.x, oy = t.origin_y + 0.5 - w0.y;
-    // The plane's value at the origin pixel and its gradients, in double.
-    auto plane_at_origin = [&](double a0, double a1, double a2) {
-        const double d1 = a1 - a0, d2 = a2 - a0;
-        const double dadx = (d1 * y2 - d2 * y1) * inv_det, dady = (d2 * x1 - d1 * x2) * inv_det;
-        return std::array<double, 3>{a0 + dadx * ox + dady * oy, dadx, dady};
-    };
-    auto plane = [&](double a0, double a1, double a2) {
-        const auto [at_origin, dadx, dady] = plane_at_origin(a0, a1, a2);
-        return Plane{float(at_origin), float(dadx), float(dady)};
-    };
-    auto [z0, dzdx, dzdy] = plane_at_origin(w0.z, w1.z, w2.z);
+    return {x1, y1, x2, y2, inv_det, t.origin_x + 0.5 - w0.x, t.origin_y + 0.5 - w0.y};
+}
+
+// Window depth's plane, with the draw's polygon offset: all the depth test needs (the
+// visibility pass makes this plane alone).
+template <int N>
+void setup_depth_plane(TriangleSetup<N>& t, const PlaneBasis& basis) {
+    const WindowPosition &w0 = t.corner[0]->window, &w1 = t.corner[1]->window, &w2 = t.corner[2]->window;
+    auto [z0, dzdx, dzdy] = basis.at_origin(w0.z, w1.z, w2.z);
     if (t.options.offset_factor != 0.0f || t.options.offset_units != 0.0f) {
         // glPolygonOffset for a float depth buffer: the slope m = max(|dz/dx|, |dz/dy|) and the
         // minimum resolvable difference r = 2^(e - 23), e the exponent of the largest |z| of
@@ -177,6 +187,23 @@ void setup_planes(TriangleSetup<N>& t) {
     }
     const float z_hi = float(z0);
     t.z = DepthPlane{z_hi, float(z0 - double(z_hi)), float(dzdx), float(dzdy)};
+}
+
+// Makes the interpolation planes of a triangle whose coverage is set up: depth, 1/w and the
+// varyings. Flat: the shader's flat varyings (shader.h), whose planes are the provoking
+// vertex's value, constant.
+// Constant: compiled to look for constant varyings (constant_varyings above), which it does
+// when the draw asks (options.find_constant). A draw decides once, and every path of the
+// draw interpolates with the same choice (interpolate_perspective), so a pixel's value never
+// depends on the path that drew it. Only blended draws whose shaders read varyings alone
+// look (tile_back_end.h): they shade such a triangle once; elsewhere the test and its
+// branch would cost without a gain.
+template <uint64_t Flat = 0, bool Constant = false, int N>
+void setup_planes(TriangleSetup<N>& t) {
+    const PlaneBasis basis = plane_basis(t);
+    setup_depth_plane(t, basis);
+    const ShadedVertex<N>&v0 = *t.corner[0], &v1 = *t.corner[1], &v2 = *t.corner[2];
+    const WindowPosition &w0 = v0.window, &w1 = v1.window, &w2 = v2.window;
     // A triangle whose corners carry equal varyings (a flat-shaded face's normal, a plane's
     // normal, one color) has them everywhere: (a/w)/(1/w) = a exactly in real numbers, and
     // taking a itself avoids the rounding of that division (and the division). A smooth
@@ -192,11 +219,11 @@ void setup_planes(TriangleSetup<N>& t) {
     }
     if (t.options.noperspective) {
         t.inv_w = Plane{1.0f, 0.0f, 0.0f};
-        for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = plane(v0.clip.var[k], v1.clip.var[k], v2.clip.var[k]);
+        for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = basis.plane(v0.clip.var[k], v1.clip.var[k], v2.clip.var[k]);
     } else {
-        t.inv_w = plane(w0.inv_w, w1.inv_w, w2.inv_w);
+        t.inv_w = basis.plane(w0.inv_w, w1.inv_w, w2.inv_w);
         for (size_t k = 0; k < size_t(N); ++k)
-            t.var_w[k] = plane(double(v0.clip.var[k]) * w0.inv_w, double(v1.clip.var[k]) * w1.inv_w, double(v2.clip.var[k]) * w2.inv_w);
+            t.var_w[k] = basis.plane(double(v0.clip.var[k]) * w0.inv_w, double(v1.clip.var[k]) * w1.inv_w, double(v2.clip.var[k]) * w2.inv_w);
     }
     for (size_t k = 0; k < size_t(N); ++k)
         if ((Flat >> k) & 1) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
