@@ -133,7 +133,8 @@ struct TileBackEnd {
         return shaded;
     }
 
-    // A row's depth and stencil values (found once per row, not per group).
+    // A row's depth and stencil values (found once per row, not per group); no stencil row
+    // where the draw does not test stencil.
     struct DepthRow {
         float* depth;
         uint8_t* stencil;
@@ -143,8 +144,8 @@ struct TileBackEnd {
     }
     // The early depth (and stencil) test of group [x, x + 8) of a row of `width` at depths z.
     simd::i8 test_group(const DepthRow& row, int x, int width, simd::f8 z, simd::i8 covered, bool front_facing) const {
-        if constexpr (kMayStencil) return tests.test_group(row.depth, row.stencil, x, width, z, covered, front_facing);
-        else return tests.depth.test_group(row.depth, x, width, z, covered);
+        if (kMayStencil && row.stencil) return tests.test_group(row.depth, row.stencil, x, width, z, covered, front_facing);
+        return tests.depth.test_group(row.depth, x, width, z, covered);
     }
 
     // EightPixelGroups: each row's span in groups of eight; depth, 1/w and the varyings
