@@ -21,6 +21,11 @@ namespace {
 using Run = std::function<int()>;
 
 // --threads: a count, or 0 for one thread per core.
+// The scene or model file of a command that shows one (animate, view).
+void add_input_option(CLI::App& cmd, std::string& input) {
+    cmd.add_option("input", input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
+}
+
 void add_threads_option(CLI::App& cmd, int& threads) {
     cmd.add_option("--threads", threads, "Worker threads (0: one per core); the pictures are the same for any count")
         ->check(CLI::Range(0, 256))
@@ -154,7 +159,7 @@ Run add_thumbnails(CLI::App& app) {
 Run add_animate(CLI::App& app) {
     auto opt = std::make_shared<AnimateOptions>();
     CLI::App* cmd = app.add_subcommand("animate", "Render a scene's keyframes, a model's animation or a turntable to a video, a GIF or numbered pictures");
-    cmd->add_option("input", opt->input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
+    add_input_option(*cmd, opt->input);
     cmd->add_option("-o,--output", opt->out, "Output by extension: .mp4 (H.264), .webm (VP9), .gif, or numbered pictures such as frames/%04d.png")
         ->required();
     cmd->add_option("--turntable", opt->turntable,
@@ -174,7 +179,7 @@ Run add_animate(CLI::App& app) {
 Run add_view(CLI::App& app) {
     auto opt = std::make_shared<ViewOptions>();
     CLI::App* cmd = app.add_subcommand("view", "Show a scene or model file in a window: turn it around, change the settings live");
-    cmd->add_option("input", opt->input, "Scene file (.json) or model file (glTF, GLB, OBJ, FBX, STL...)")->required();
+    add_input_option(*cmd, opt->input);
     cmd->add_option("--screenshots", opt->screenshots, "Folder the screenshot key (p or F12) writes softraster-view-NNN.png into")
         ->capture_default_str();
     cmd->add_option("--orbit-frames", opt->orbit_frames,

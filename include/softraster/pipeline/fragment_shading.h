@@ -63,12 +63,11 @@ inline void shade_and_merge(void (*shade)(const void*, FragmentGroups<N>&), cons
                             PendingGroups<N>& p) {
     if (p.empty()) return;
     shade(shader, p.batch);
-    const bool blended = blend.mode != BlendMode::Opaque;
     if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) {
-        if (blended) merge_groups_wide<true>(blend, fb, p.batch, p.pass.data());
+        if (blend.blends()) merge_groups_wide<true>(blend, fb, p.batch, p.pass.data());
         else merge_groups_wide<false>(blend, fb, p.batch, p.pass.data());
     } else {
-        if (blended) merge_groups_generic<true>(blend, fb, p.batch, p.pass.data());
+        if (blend.blends()) merge_groups_generic<true>(blend, fb, p.batch, p.pass.data());
         else merge_groups_generic<false>(blend, fb, p.batch, p.pass.data());
     }
     p.batch.count = 0;
@@ -90,8 +89,8 @@ inline void shade_fragment(const FragmentCalls<N>& calls, const void* shader, co
     if (!calls.pixel(shader, make_varyings(), frag, color)) return;
     depth.template write_pixel<Samples>(fb.depth_data() + base, pass, z);
     if (!blend.color_mask) return;
-    if (blend.mode == BlendMode::Opaque) merge_fragment<Samples, false>(blend, fb.color_data() + base, pass, color);
-    else merge_fragment<Samples, true>(blend, fb.color_data() + base, pass, color);
+    if (blend.blends()) merge_fragment<Samples, true>(blend, fb.color_data() + base, pass, color);
+    else merge_fragment<Samples, false>(blend, fb.color_data() + base, pass, color);
 }
 
 }  // namespace softraster

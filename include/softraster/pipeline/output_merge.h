@@ -84,6 +84,8 @@ struct BlendSettings {
         // the masked channels; the presets' own paths write all four.
         mode = color_mask != 0 && color_mask != 0xf ? BlendMode::Custom : st.blend;
     }
+    // Whether the draw blends (reads what it overwrites): the back ends choose the merge by it.
+    bool blends() const { return mode != BlendMode::Opaque; }
 };
 
 // One channel's factor and result, for one pixel (T = int) or eight (T = simd::i8, lane by

@@ -33,11 +33,10 @@ template <class L, int Samples>
 struct TileBackEnd {
     static constexpr int N = L::N;
     static constexpr uint64_t Flat = L::kFlat;
-    bool blended() const { return blend.mode != BlendMode::Opaque; }
     // Blended draws of shaders that read varyings alone shade a triangle whose varyings are
     // constant once (draw_groups); setup looks for those only in them (setup_planes).
     static constexpr bool kConstant = L::kVaryingsOnly;
-    bool find_constant() const { return kConstant && blended(); }
+    bool find_constant() const { return kConstant && blend.blends(); }
     // Single-sampled opaque draws may test stencil too: general_back_end.h sends those that
     // do here when nothing after the shader can drop a fragment. They run the fragment queue
     // or EightPixelGroups, with the stencil test where depth is tested: a choice made per
@@ -72,7 +71,7 @@ struct TileBackEnd {
     enum class Strategy { FragmentQueue, EightPixelGroups, PixelByPixel };
     static constexpr bool kQueueable = L::kBatch && L::kPure;
     Strategy strategy() const {
-        if (kQueueable && !blended() && state.color_write && blend.color_mask) return Strategy::FragmentQueue;
+        if (kQueueable && !blend.blends() && state.color_write && blend.color_mask) return Strategy::FragmentQueue;
         return Samples == 1 && L::kBatch ? Strategy::EightPixelGroups : Strategy::PixelByPixel;
     }
 
