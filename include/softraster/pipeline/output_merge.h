@@ -233,34 +233,48 @@ inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace spa
     out = r | (g << 8) | (b << 16) | (simd::quantize_unorm8(c[3]) << 24);
 }
 
-// Blends colors c (r, g, b, a lanes) into the group of eight RGBA8 pixels from row[x] on
-// (simd.h), where `write` is set: the same arithmetic as blend() above, lane by lane, for
-// opaque draws and the presets (Custom draws blend a row at a time, blend_row below).
+// A source color of eight lanes in 8-bit: the channels blending reads (r, g, b, a), or for
+// an opaque write the pixel as the framebuffer stores it (packed). Quantized apart from the
+// merge, so that a color the same for a whole triangle is quantized once, not per group.
+struct SourceUnorm8 {
+    simd::i8 r, g, b, a, packed;
+};
 template <bool Blended>
-inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
+inline SourceUnorm8 quantize_source(const BlendSettings& settings, const std::array<simd::f8, 4>& c) {
+    SourceUnorm8 q{};
+    if (!Blended || settings.mode == BlendMode::Opaque) {
+        quantize_pack_rgba8(c, settings.color_space, q.packed);
+    } else {
+        q.r = simd::quantize_unorm8(c[0]), q.g = simd::quantize_unorm8(c[1]), q.b = simd::quantize_unorm8(c[2]);
+        q.a = simd::quantize_unorm8(c[3]);
+    }
+    return q;
+}
+
+// Blends source s into the group of eight RGBA8 pixels from row[x] on (simd.h), where
+// `write` is set: the same arithmetic as blend() above, lane by lane, for opaque draws and
+// the presets (Custom draws blend a row at a time, blend_row below).
+template <bool Blended>
+inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int width, simd::i8 write, const SourceUnorm8& s) {
     using simd::i8;
     const BlendMode mode = settings.mode;
     const i8 old = simd::load_group<i8>(row, x, width);
     if (!Blended || mode == BlendMode::Opaque) {
-        simd::i8 packed;
-        quantize_pack_rgba8(c, settings.color_space, packed);
-        simd::store_group(row, x, width, simd::select(write, packed, old));
+        simd::store_group(row, x, width, simd::select(write, s.packed, old));
         return;
     }
-    const i8 sr = simd::quantize_unorm8(c[0]), sg = simd::quantize_unorm8(c[1]), sb = simd::quantize_unorm8(c[2]),
-             sa = simd::quantize_unorm8(c[3]);
     const i8 dr = old & 255, dg = (old >> 8) & 255, db = (old >> 16) & 255, da = (old >> 24) & 255;
     i8 r, g, b, a;
     if (mode == BlendMode::Alpha) {
-        const i8 inv = 255 - sa;
-        r = mul_unorm8(sr, sa) + mul_unorm8(dr, inv);
-        g = mul_unorm8(sg, sa) + mul_unorm8(dg, inv);
-        b = mul_unorm8(sb, sa) + mul_unorm8(db, inv);
-        a = sa + mul_unorm8(da, inv);
+        const i8 inv = 255 - s.a;
+        r = mul_unorm8(s.r, s.a) + mul_unorm8(dr, inv);
+        g = mul_unorm8(s.g, s.a) + mul_unorm8(dg, inv);
+        b = mul_unorm8(s.b, s.a) + mul_unorm8(db, inv);
+        a = s.a + mul_unorm8(da, inv);
     } else {
-        r = mul_unorm8(sr, sa) + dr;
-        g = mul_unorm8(sg, sa) + dg;
-        b = mul_unorm8(sb, sa) + db;
+        r = mul_unorm8(s.r, s.a) + dr;
+        g = mul_unorm8(s.g, s.a) + dg;
+        b = mul_unorm8(s.b, s.a) + db;
         a = da;
     }
     const i8 max = simd::splat_i(255);
@@ -269,6 +283,11 @@ inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int wi
     b = b > max ? max : b;
     a = a > max ? max : a;
     simd::store_group(row, x, width, simd::select(write, r | (g << 8) | (b << 16) | (a << 24), old));
+}
+// The same for colors c (r, g, b, a lanes).
+template <bool Blended>
+inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int width, simd::i8 write, const std::array<simd::f8, 4>& c) {
+    blend_group<Blended>(settings, row, x, width, write, quantize_source<Blended>(settings, c));
 }
 
 // ---- every equation and factor, a row at a time

@@ -269,7 +269,9 @@ struct TileBackEnd {
         const std::array<f8, 4> constant_rgba = constant ? *r.constant : std::array<f8, 4>{};
         RowGroups custom;
         i8 constant_packed{};
+        SourceUnorm8 constant_source{};  // (quantized once for the row)
         if (constant && custom_blend) quantize_pack_rgba8(constant_rgba, constant_packed);
+        else if (constant) constant_source = quantize_source</*Blended=*/true>(blend, constant_rgba);
         for_each_group(span.begin, span.end, [&](int x, i8 covered) {
             const f8 i = to_float(kLaneIndex) + float(x - t.origin_x);
             const f8 z = interpolate_depth(t, i, j);
@@ -278,7 +280,7 @@ struct TileBackEnd {
             shaded += unsigned(__builtin_popcount(bits(pass)));
             if (constant) {
                 if (custom_blend) custom.add(x, pass, constant_packed);
-                else blend_group</*Blended=*/true>(blend, color_row, x, width, pass, constant_rgba);  // (only blended draws look)
+                else blend_group</*Blended=*/true>(blend, color_row, x, width, pass, constant_source);  // (only blended draws look)
                 return;
             }
             groups.add(span.y, x, pass, z) = interpolate_varyings<L, kConstant>(t, i, j);
