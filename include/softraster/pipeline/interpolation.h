@@ -68,8 +68,10 @@ inline std::array<simd::f8, N> interpolate_quad_rows(const TriangleSetup<N>& t, 
     constexpr uint64_t Flat = kFlatVaryings<S>;
     constexpr size_t a = size_t(S::kDerivativeOf), at = size_t(S::kDerivativeAt);
     std::array<f8, N> out;
+    static_assert(((Flat >> a) & 3) == 0, "the varying with derivatives is interpolated");
     const f8 w = 1.0f / t.inv_w.at(i, j);  // (interpolate_perspective)
     for (size_t k = 0; k < size_t(N); ++k) {
+        if (k >= at && k < at + 4) continue;  // (the derivatives, below)
         if ((Flat >> k) & 1) out[k] = t.var_w[k].at(i, j);
         else out[k] = t.var_w[k].at(i, j) * w;
     }
@@ -79,8 +81,7 @@ inline std::array<simd::f8, N> interpolate_quad_rows(const TriangleSetup<N>& t, 
     auto even = [](const f8& v) { return __builtin_shufflevector(v, v, 0, 0, 2, 2, 4, 4, 6, 6); };
     auto odd = [](const f8& v) { return __builtin_shufflevector(v, v, 1, 1, 3, 3, 5, 5, 7, 7); };
     for (size_t c = 0; c < 2; ++c) {
-        const Plane& p = t.var_w[a + c];
-        const f8 here = p.at(i, j) * w, there = p.at(i, j_other) * w_other;
+        const f8 here = out[a + c], there = t.var_w[a + c].at(i, j_other) * w_other;
         const f8 row0 = top ? here : there, row1 = top ? there : here;  // a at rows y0 and y0 + 1
         const f8 v00 = even(row0);
         out[at + c] = odd(row0) - v00;
@@ -98,19 +99,24 @@ inline void interpolate_quad_row_pair(const TriangleSetup<N>& t, const simd::f8&
     using simd::f8;
     constexpr uint64_t Flat = kFlatVaryings<S>;
     constexpr size_t a = size_t(S::kDerivativeOf), at = size_t(S::kDerivativeAt);
+    static_assert(((Flat >> a) & 3) == 0, "the varying with derivatives is interpolated");
     const f8 j1 = j0 + 1.0f;
     const f8 w0 = 1.0f / t.inv_w.at(i, j0), w1 = 1.0f / t.inv_w.at(i, j1);
+    // Built in locals and stored at the end: stores through first and second (floats) could
+    // alias the planes, which would then be loaded again after each.
+    std::array<f8, size_t(N)> top, bottom;
     for (size_t k = 0; k < size_t(N); ++k) {
-        if ((Flat >> k) & 1) first[k] = t.var_w[k].at(i, j0), second[k] = t.var_w[k].at(i, j1);
-        else first[k] = t.var_w[k].at(i, j0) * w0, second[k] = t.var_w[k].at(i, j1) * w1;
+        if (k >= at && k < at + 4) continue;  // (the derivatives, below)
+        if ((Flat >> k) & 1) top[k] = t.var_w[k].at(i, j0), bottom[k] = t.var_w[k].at(i, j1);
+        else top[k] = t.var_w[k].at(i, j0) * w0, bottom[k] = t.var_w[k].at(i, j1) * w1;
     }
     for (size_t c = 0; c < 2; ++c) {
-        const Plane& p = t.var_w[a + c];
-        const f8 row0 = p.at(i, j0) * w0, row1 = p.at(i, j1) * w1;
+        const f8 row0 = top[a + c], row1 = bottom[a + c];  // (a is not flat: the same values as p.at * w)
         const f8 v00 = __builtin_shufflevector(row0, row0, 0, 0, 2, 2, 4, 4, 6, 6);
-        first[at + c] = second[at + c] = __builtin_shufflevector(row0, row0, 1, 1, 3, 3, 5, 5, 7, 7) - v00;
-        first[at + 2 + c] = second[at + 2 + c] = __builtin_shufflevector(row1, row1, 0, 0, 2, 2, 4, 4, 6, 6) - v00;
+        top[at + c] = bottom[at + c] = __builtin_shufflevector(row0, row0, 1, 1, 3, 3, 5, 5, 7, 7) - v00;
+        top[at + 2 + c] = bottom[at + 2 + c] = __builtin_shufflevector(row1, row1, 0, 0, 2, 2, 4, 4, 6, 6) - v00;
     }
+    first = top, second = bottom;
 }
 
 template <class S, bool Constant = false, int N, class T>
