@@ -271,6 +271,14 @@ public:
     uint64_t draw_tile(int tile, const Rect& tile_rect, const DrawTarget& target) override {
         const Rect rect = this->scissored(tile_rect, state_);
         if (rect.empty()) return 0;
+        // A draw that writes no color (a shadow map's, an ambient occlusion pass's) with a
+        // shader that never discards tests and writes depth alone: hidden-surface removal's
+        // first pass without owners, from each triangle's edges and depth plane, with no
+        // varyings and no shader.
+        if (L::kPure && (!state_.color_write || state_.color_mask == 0)) {
+            phases::visibility_pass<Samples>(triangles(), state_, *target.fb, target.grid.tile_x(tile), target.grid.tile_y(tile), rect, 0, nullptr);
+            return 0;
+        }
         const TileBackEnd<L, Samples> back_end{layout_, state_, DepthStencilTest(DepthTest(state_)), BlendSettings(state_, target.fb->color_space()),
                                                          triangles(), *target.fb};
         return phases::draw_tile(back_end, target.grid.tile_x(tile), target.grid.tile_y(tile), rect);

@@ -70,8 +70,9 @@ HiddenSurfaceRun hidden_surface_run(std::span<const DrawPtr> draws, size_t first
 
 // Pass 1 for one triangle: depth test and write, and `me` as the owner of every sample
 // that passes. `owners` holds the tile's samples, row by row (kTileSize pixels a row,
-// Samples per pixel). It needs the triangle's edges and depth only, so it is compiled once
-// per sample count and CPU path (simd.h) for every varying count.
+// Samples per pixel); null for a draw that writes depth alone (a shadow map's, the tile
+// back end's DepthOnly), which has no second pass. It needs the triangle's edges and depth
+// only, so it is compiled once per sample count and CPU path (simd.h) for every varying count.
 template <int Samples>
 void visible_samples(const TriangleEdges& edges, const DepthTest& test, Framebuffer& fb, const Rect& rect, uint32_t me, uint32_t* owners) {
     // Copies in locals: a store to the depth buffer or the owners may alias anything a
@@ -88,14 +89,16 @@ void visible_samples(const TriangleEdges& edges, const DepthTest& test, Framebuf
             for_each_group(x_begin, x_end, [&](int x, i8 covered) {
                 const f8 z = interpolate_depth(t, to_float(kLaneIndex) + float(x - t.origin_x), j);
                 const i8 pass = depth.test_group(depth_row, x, width, z, covered);
+                if (!owners) return;
                 const int ox = x - rect.x0, ow = width - rect.x0;
                 store_group(owner, ox, ow, select(pass, splat_i(int32_t(me)), load_group<i8>(owner, ox, ow)));
             });
         });
     } else {
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
-            uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
             const unsigned pass = depth.template test_and_write_pixel<Samples>(fb.depth_data() + fb.sample_index(px.x, px.y), px.mask, px.z.data());
+            if (!owners) return;
+            uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
             for (int s = 0; s < Samples; ++s)
                 if (pass & (1u << s)) owner[s] = me;
         });
