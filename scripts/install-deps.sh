@@ -8,14 +8,16 @@ pkgs=(cmake ninja-build g++ pkg-config python3
       libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev libopenexr-dev libpng-dev libnetpbm-dev
       libopenimageio-dev libassimp-dev
       libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libgif-dev libimagequant-dev libchafa-dev
-      libsdl2-dev libsdl2-ttf-dev libx11-dev fonts-dejavu-core)
+      libsdl2-dev libsdl2-ttf-dev libx11-dev fonts-dejavu-core help2man)
 if [ "${1:-}" = "--tests" ]; then
   # GoogleTest and Google Benchmark for the suite; OSMesa (Mesa llvmpipe) is the test-only reference;
   # assimp-testmodels: the corpus of real model files the thumbnails test renders.
   # ffmpeg: ffprobe and ffmpeg read the animations back; tmux shows the terminal preview;
   # Xvfb and xdotool run the viewer's window and type into it; xwd (x11-apps) reads it back.
   # ccache: test.sh builds two trees; it keeps their compiled files for the next run.
-  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels ffmpeg tmux xvfb xauth xdotool x11-apps ccache)
+  # bubblewrap runs the thumbnailer in GNOME's sandbox; lintian checks the .deb packages.
+  pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels ffmpeg tmux xvfb xauth xdotool x11-apps ccache
+         bubblewrap lintian)
 fi
 missing=()
 for p in "${pkgs[@]}"; do

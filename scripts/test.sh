@@ -23,7 +23,8 @@ run_suite() {  # name, cmake args...
 # The course's lesson programs are built and their pictures checked in the Release build
 # only (the sanitizer build of the lessons took twice as long); the unit tests check the
 # lessons' code (tests/course) in both.
-run_suite release -DCMAKE_BUILD_TYPE=Release -DSOFTRASTER_COURSE=ON
+# (Installed to /usr, as the Debian packages are: the install tests check those.)
+run_suite release -DCMAKE_BUILD_TYPE=Release -DSOFTRASTER_COURSE=ON -DCMAKE_INSTALL_PREFIX=/usr
 if [ "${1:-}" != "release" ]; then
   # detect_leaks: LeakSanitizer is part of ASan; halt on the first UB report.
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

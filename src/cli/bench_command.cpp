@@ -27,8 +27,9 @@ int run_bench(const BenchOptions& opt) {
     for (int i = 0; i < opt.warmup + opt.frames; ++i) {
         if (i == opt.warmup) timed_start = std::chrono::steady_clock::now();
         const auto t0 = std::chrono::steady_clock::now();
+        std::optional<Scene> turned_copy;  // (declared first: the renderer keeps a reference to it)
         std::optional<SceneRenderer> turned;
-        if (opt.orbit) turned.emplace(turned_scene(scene, 360.0 * std::max(0, i - opt.warmup) / opt.frames), threads);
+        if (opt.orbit) turned.emplace(turned_copy.emplace(turned_scene(scene, 360.0 * std::max(0, i - opt.warmup) / opt.frames)), threads);
         const SceneRenderer& renderer = opt.orbit ? *turned : *still;
         triangles = renderer.triangle_count();
         if (!fb) fb.emplace(renderer.make_framebuffer());

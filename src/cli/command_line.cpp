@@ -1,6 +1,8 @@
 // The command line: every command's options (CLI11), parsed into the command's option
 // struct (commands.h), then the command run. The one source file that includes CLI11, whose
 // header compiles a few seconds' worth of code into every file that includes it.
+#include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <functional>
 #include <iostream>
@@ -11,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command_line.h"
+#include "cli/command_tree.h"
 #include "cli/commands.h"
 #include "git_commit.h"  // (generated: SOFTRASTER_GIT_COMMIT)
 #include "softraster/error.h"
@@ -195,10 +198,81 @@ Run add_view(CLI::App& app) {
     return model_command(opt, cmd, run_view);
 }
 
+Run add_thumbnail(CLI::App& app) {
+    auto opt = std::make_shared<ThumbnailOptions>();
+    CLI::App* cmd = app.add_subcommand("thumbnail", "Draw one model file's thumbnail for a file manager (the freedesktop thumbnailer's command)");
+    cmd->add_option("input", opt->input, "Model file (its format read from its first bytes where the extension lies or is missing)")->required();
+    cmd->add_option("output", opt->output, "Output picture: always a PNG, whatever its extension")->required();
+    cmd->add_option("-s,--size", opt->size, "Width and height in pixels")->check(CLI::Range(8, 4096))->capture_default_str();
+    cmd->add_option("--background", opt->background, "Background R,G,B,A (0 to 1) or #RRGGBBAA; transparent by default")->capture_default_str();
+    cmd->add_option("--max-file-size", opt->max_file_size, "Megabytes: a larger file is not read")->check(CLI::Range(0.001, 1e6))->capture_default_str();
+    cmd->add_option("--timeout", opt->timeout, "Seconds before giving up (exit code 3, no output left behind)")
+        ->check(CLI::Range(1, 86400))
+        ->capture_default_str();
+    cmd->footer("Example (the line softraster.thumbnailer gives file managers): softraster thumbnail --size 256 model.glb thumb.png\n"
+                "Exit codes: 0 drawn, 2 bad input (unreadable, too large, nothing to draw), 3 timed out.");
+    return [opt] { return run_thumbnail(*opt); };
+}
+
+// The command tree as plain data (command_tree.h).
+std::vector<std::string> choices_of(const CLI::Option& o) {  // IsMember's description: {a,b,c}
+    std::vector<std::string> choices;
+    const std::string type = o.get_type_name();
+    const size_t open = type.find('{'), close = type.find('}', open);
+    if (open == std::string::npos || close == std::string::npos) return choices;
+    const std::string list = type.substr(open + 1, close - open - 1);
+    for (size_t at = 0; at <= list.size();) {
+        const size_t comma = std::min(list.find(',', at), list.size());
+        choices.push_back(list.substr(at, comma - at));
+        at = comma + 1;
+    }
+    return choices;
+}
+std::vector<OptionInfo> option_infos(const CLI::App& app) {
+    std::vector<OptionInfo> infos;
+    for (const CLI::Option* o : app.get_options([](const CLI::Option* o) { return o->nonpositional(); })) {
+        OptionInfo info;
+        for (const std::string& s : o->get_snames()) info.names.push_back("-" + s);
+        for (const std::string& l : o->get_lnames()) info.names.push_back("--" + l);
+        info.takes_value = o->get_type_size() > 0;
+        const std::string type = o->get_type_name();
+        info.numeric = type.rfind("INT", 0) == 0 || type.rfind("FLOAT", 0) == 0 || type.rfind("UINT", 0) == 0;
+        info.choices = choices_of(*o);
+        infos.push_back(info);
+    }
+    return infos;
+}
+std::vector<CommandInfo> command_infos(const CLI::App& app) {
+    std::vector<CommandInfo> infos;
+    for (const CLI::App* cmd : app.get_subcommands([](const CLI::App*) { return true; })) {
+        CommandInfo info{cmd->get_name(), option_infos(*cmd), false, {}};
+        for (const CLI::Option* o : cmd->get_options([](const CLI::Option* o) { return o->get_positional(); })) {
+            info.takes_files = true;
+            const std::vector<std::string> choices = choices_of(*o);
+            info.positional_choices.insert(info.positional_choices.end(), choices.begin(), choices.end());
+        }
+        infos.push_back(info);
+    }
+    return infos;
+}
+
+Run add_completion(CLI::App& app) {
+    auto shell = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand("completion", "Print the shell completion script for softraster's commands and options");
+    cmd->add_option("shell", *shell, "The shell")->check(CLI::IsMember({"bash"}))->required();
+    cmd->footer("Example: source <(softraster completion bash)\n"
+                "The package installs it to share/bash-completion/completions, where bash finds it by itself.");
+    return [shell, &app] {
+        std::fputs(bash_completion(command_infos(app), option_infos(app)).c_str(), stdout);
+        return 0;
+    };
+}
+
 }  // namespace
 
 int run_command_line(int argc, char** argv) {
     CLI::App app{"softraster: a CPU rasterizer that renders scene files (format versions 1 and 2) and model files (glTF, OBJ, FBX, STL...) to pictures"};
+    app.name("softraster");  // (not argv[0]: the help and the man pages made from it name the program so)
     app.set_version_flag("--version", "softraster " SOFTRASTER_VERSION " (commit " SOFTRASTER_GIT_COMMIT ")");
     app.require_subcommand(1);
     app.footer("Run 'softraster COMMAND --help' for a command's options.\n"
@@ -209,6 +283,8 @@ int run_command_line(int argc, char** argv) {
     const Run thumbnails = add_thumbnails(app);
     const Run animate = add_animate(app);
     const Run view = add_view(app);
+    const Run thumbnail = add_thumbnail(app);
+    const Run completion = add_completion(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -228,6 +304,8 @@ int run_command_line(int argc, char** argv) {
         if (app.got_subcommand("thumbnails")) return thumbnails();
         if (app.got_subcommand("animate")) return animate();
         if (app.got_subcommand("view")) return view();
+        if (app.got_subcommand("thumbnail")) return thumbnail();
+        if (app.got_subcommand("completion")) return completion();
     } catch (const InputError& e) {
         std::cerr << "softraster: error: " << e.what() << "\n";
         return kExitBadInput;

@@ -57,6 +57,13 @@ struct ViewOptions {
 };
 int run_view(const ViewOptions& opt);
 
+struct ThumbnailOptions {
+    std::string input, output, background = "0,0,0,0";
+    int size = 256, timeout = 30;
+    double max_file_size = 100.0;  // megabytes, as f3d's thumbnailer's default
+};
+int run_thumbnail(const ThumbnailOptions& opt);
+
 // --threads: a count, or 0 for one thread per core.
 inline unsigned thread_count(int requested) {
     return requested > 0 ? unsigned(requested) : std::max(1u, std::thread::hardware_concurrency());
@@ -64,5 +71,7 @@ inline unsigned thread_count(int requested) {
 
 // Exit codes: 0 success, 1 internal failure, 2 bad input (scene, mesh, image or flag).
 inline constexpr int kExitBadInput = 2;
+// thumbnail: the time limit passed (--timeout).
+inline constexpr int kExitTimedOut = 3;
 
 }  // namespace softraster::cli

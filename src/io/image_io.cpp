@@ -132,7 +132,8 @@ constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
 constexpr int kMaxSide = 65536;
 
 // The OpenImageIO module's decode function, opened on first use (oiio_module.h): from
-// $SOFTRASTER_MODULE_DIR, beside the program, from the build and install folders, then the
+// $SOFTRASTER_MODULE_DIR, beside the program, beside this library and in its softraster/
+// folder (where `cmake --install` and the package put it, wherever the prefix is), then the
 // system's library path.
 SoftrasterDecodeFn oiio_decoder(const std::string& name) {
     static SoftrasterDecodeFn decode = nullptr;
@@ -143,11 +144,11 @@ SoftrasterDecodeFn oiio_decoder(const std::string& name) {
         std::error_code ec;
         const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
         if (!ec) dirs.push_back(exe.parent_path().string());
-        std::string listed = SOFTRASTER_MODULE_DIRS;
-        for (size_t at = 0; at <= listed.size();) {
-            const size_t colon = std::min(listed.find(':', at), listed.size());
-            if (colon > at) dirs.push_back(listed.substr(at, colon - at));
-            at = colon + 1;
+        Dl_info self{};
+        if (dladdr(reinterpret_cast<const void*>(&oiio_decoder), &self) && self.dli_fname) {
+            const std::filesystem::path library = std::filesystem::absolute(self.dli_fname, ec).parent_path();
+            dirs.push_back(library.string());
+            dirs.push_back((library / "softraster").string());
         }
         dirs.emplace_back();
         for (const std::string& dir : dirs) {

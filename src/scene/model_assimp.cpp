@@ -12,7 +12,9 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "io/read_file.h"
 #include "scene/model_animation.h"
+#include "scene/model_format.h"
 #include "scene/model_materials.h"
 #include "softraster/error.h"
 #include "softraster/io/image_io.h"
@@ -353,10 +355,19 @@ Model load_model(const fs::path& path, MissingTexture missing, ColorSpace color)
     std::error_code ec;
     if (!fs::exists(path, ec)) throw InputError(name + ": file not found");
     if (fs::is_directory(path, ec)) throw InputError(name + ": is a directory");
-    if (!is_model_file(path)) throw InputError(name + ": not a model file assimp reads (by its extension)");
+    // The format the bytes show where the extension names another or none (model_format.h):
+    // then read from memory as that format. (Files it refers to by relative paths, such as
+    // a glTF's buffers and textures, are then looked for beside the program's folder, not
+    // the file's: a misnamed file with sidecars may come out untextured.)
+    const bool known = is_model_file(path);
+    const std::string ext = lower_case(path.extension().string()), content = model_format_of_content(path, known);
+    const bool misnamed = !content.empty() && content != ext;
+    if (!known && !misnamed) throw InputError(name + ": not a model file assimp reads (neither its extension nor its first bytes show one)");
     Assimp::Importer importer;
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
-    const aiScene* scene = importer.ReadFile(name, 0);
+    std::string bytes;
+    if (misnamed) bytes = read_whole_file(path);
+    const aiScene* scene = misnamed ? importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, content.c_str() + 1) : importer.ReadFile(name, 0);
     if (!scene) throw InputError(name + ": " + importer_error(importer));
     if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode || scene->mNumMeshes == 0)
         throw InputError(name + ": nothing to draw (the file has no meshes)");

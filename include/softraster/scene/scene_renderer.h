@@ -25,7 +25,8 @@ struct RenderStats {
 
 class SceneRenderer {
 public:
-    // threads: how many threads draw (1 = all on the calling thread).
+    // threads: how many threads draw (1 = all on the calling thread). It keeps a reference
+    // to the scene, which must outlive it: a temporary only within one expression.
     explicit SceneRenderer(const Scene& scene, unsigned threads = 1);
     ~SceneRenderer();
     SceneRenderer(const SceneRenderer&) = delete;

@@ -1,0 +1,71 @@
+# The Debian packages (`cpack -G DEB`, run by scripts/package.sh), split as Debian splits a
+# library and its program:
+#   softraster           the program, its man pages, bash completion and the thumbnailer
+#   libsoftraster0.1     the shared library and its OpenImageIO module
+#   libsoftraster-dev    headers, the .so link, the CMake package and softraster.pc
+# The library's package is named after its SONAME (libsoftraster.so.0.1, CMakeLists.txt).
+# Each component sets its own Description (synopsis first).
+# Dependencies on Debian's libraries come from dpkg-shlibdeps; the program's on the
+# library, and the -dev package's on both the library and libglm-dev, are declared here.
+set(soname_version ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME softraster)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+# (The address the project's commits carry; a distributor sets their own.)
+set(SOFTRASTER_MAINTAINER "softraster developers <maintainers@users.noreply.h-seed-5657c02a.example>" CACHE STRING "The packages' Maintainer")
+set(CPACK_PACKAGE_CONTACT "${SOFTRASTER_MAINTAINER}")
+set(CPACK_PACKAGING_INSTALL_PREFIX ${CMAKE_INSTALL_PREFIX})
+set(CPACK_STRIP_FILES ON)
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_DEBIAN_ENABLE_COMPONENT_DEPENDS ON)  # (CPACK_COMPONENT_*_DEPENDS become Depends)
+set(CPACK_COMPONENTS_ALL bin lib dev)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# (Where dpkg-shlibdeps finds the program's own library, which no installed package provides yet.)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${PROJECT_BINARY_DIR})
+set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
+
+set(CPACK_DEBIAN_BIN_PACKAGE_NAME softraster)
+set(CPACK_DEBIAN_BIN_PACKAGE_SECTION graphics)
+set(CPACK_COMPONENT_BIN_DESCRIPTION "3D rasterizer that runs the whole graphics pipeline on the CPU
+softraster renders scene files and model files (glTF, OBJ, FBX, STL,
+COLLADA, 3DS, PLY and the other formats assimp reads) to pictures, videos
+and thumbnails with no GPU and no display. Its pictures match Mesa's
+llvmpipe. This package has the program, its man pages, bash completion,
+and a thumbnailer that shows 3D models in file managers.")
+set(CPACK_COMPONENT_BIN_DEPENDS lib)
+
+set(CPACK_DEBIAN_LIB_PACKAGE_NAME libsoftraster${soname_version})
+set(CPACK_DEBIAN_LIB_PACKAGE_SECTION libs)
+set(CPACK_COMPONENT_LIB_DESCRIPTION "3D rasterizer on the CPU - shared library
+softraster is a 3D rasterizer that runs the whole graphics pipeline on
+the CPU, with pictures that match Mesa's llvmpipe. This package has the
+shared library.")
+# ldconfig by trigger, as Debian wants it (CPack also writes postinst and postrm that run it).
+set(CPACK_DEBIAN_LIB_PACKAGE_CONTROL_EXTRA ${PROJECT_SOURCE_DIR}/packaging/triggers)
+set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)  # (and the ldconfig trigger)
+set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS_POLICY "=")
+
+set(CPACK_DEBIAN_DEV_PACKAGE_NAME libsoftraster-dev)
+set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
+set(CPACK_COMPONENT_DEV_DESCRIPTION "3D rasterizer on the CPU - development files
+softraster is a 3D rasterizer that runs the whole graphics pipeline on
+the CPU, with pictures that match Mesa's llvmpipe. This package has the
+headers, the CMake package (find_package(softraster), target
+softraster::softraster) and softraster.pc.")
+set(CPACK_COMPONENT_DEV_DEPENDS lib)
+set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "libglm-dev")
+
+# Each package's /usr/share/doc/<package>: the copyright file and the changelog Debian asks for.
+foreach(component bin lib dev)
+  string(TOUPPER ${component} upper)
+  set(package ${CPACK_DEBIAN_${upper}_PACKAGE_NAME})
+  install(FILES ${PROJECT_SOURCE_DIR}/packaging/copyright DESTINATION ${CMAKE_INSTALL_DOCDIR}/../${package} COMPONENT ${component})
+  install(FILES ${PROJECT_BINARY_DIR}/changelog.gz DESTINATION ${CMAKE_INSTALL_DOCDIR}/../${package} COMPONENT ${component})
+endforeach()
+add_custom_command(OUTPUT ${PROJECT_BINARY_DIR}/changelog.gz
+                   COMMAND sh -c "gzip -n -9 -c '${PROJECT_SOURCE_DIR}/packaging/changelog' > '${PROJECT_BINARY_DIR}/changelog.gz'"
+                   DEPENDS ${PROJECT_SOURCE_DIR}/packaging/changelog VERBATIM)
+add_custom_target(softraster_changelog ALL DEPENDS ${PROJECT_BINARY_DIR}/changelog.gz)
+
+include(CPack)

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Builds softraster's Debian packages into dist/: softraster (the program), libsoftraster0.1
+# (the library) and libsoftraster-dev (headers, CMake and pkg-config files).
+#   scripts/package.sh && sudo apt install ./dist/*.deb
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+export CCACHE_SLOPPINESS=pch_defines,time_macros
+# The packages install to /usr; the tests and the course are not part of them.
+cmake -S . -B build-package -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr -DSOFTRASTER_TESTS=OFF \
+      -DSOFTRASTER_COURSE=OFF "${launcher[@]}" >/dev/null
+cmake --build build-package -j "$(nproc)"
+rm -rf dist
+(cd build-package && cpack -G DEB -B "$PWD/../dist" >/dev/null)
+rm -rf dist/_CPack_Packages
+ls -1 dist/*.deb
+echo "Install them with: sudo apt install ./dist/*.deb"
