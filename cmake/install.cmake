@@ -7,7 +7,7 @@
 #   lib/<arch>/cmake/softraster/                 softrasterConfig.cmake: softraster::softraster
 #   lib/<arch>/pkgconfig/softraster.pc           pkg-config --cflags --libs softraster
 #
-# Components, one per Debian package (cmake/package.cmake): bin, lib and dev.
+# Components, one per Debian package (cmake/package.cmake): bin, lib, oiio (the module) and dev.
 include(CMakePackageConfigHelpers)
 
 # Installed anywhere but /usr (a user's /usr/local or ~/.local, a test's staging folder),
@@ -22,7 +22,7 @@ install(TARGETS softraster RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT
 install(TARGETS softraster_lib EXPORT softrasterTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT lib NAMELINK_COMPONENT dev
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(TARGETS softraster_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/softraster COMPONENT lib)
+install(TARGETS softraster_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/softraster COMPONENT oiio)
 install(DIRECTORY include/softraster DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev)
 
 set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/softraster)
@@ -69,4 +69,3 @@ install(FILES ${PROJECT_BINARY_DIR}/completion/softraster DESTINATION ${CMAKE_IN
 # listed there; the MIME types shared-mime-info lacks are declared by our own XML.
 install(FILES data/softraster.thumbnailer DESTINATION ${CMAKE_INSTALL_DATADIR}/thumbnailers COMPONENT bin)
 install(FILES data/softraster-models.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages COMPONENT bin)
-include(cmake/package.cmake)

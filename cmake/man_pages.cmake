@@ -3,7 +3,9 @@
 # as Debian installs them). Run by the build (cmake/install.cmake):
 #   cmake -DEXE=... -DOUT=... -DVERSION=... -DCOMMANDS="render;..." -DHELP2MAN=... -P man_pages.cmake
 file(GLOB stale ${OUT}/*.1 ${OUT}/*.1.gz)  # (a command removed leaves no page behind)
-file(REMOVE ${stale})
+if(stale)
+  file(REMOVE ${stale})
+endif()
 file(MAKE_DIRECTORY ${OUT}/wrappers)
 set(see_also "[SEE ALSO]\n.BR softraster (1)")
 foreach(command ${COMMANDS})

@@ -365,8 +365,10 @@ struct Loader {
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& path) {
-    const std::string file = path.string();
-    const std::string text = read_whole_file(path);
+    return parse_scene(read_whole_file(path), path.parent_path(), path.string());
+}
+
+Scene parse_scene(const std::string& text, const std::filesystem::path& dir, const std::string& file) {
     json root;
     try {
         root = json::parse(text);
@@ -378,7 +380,7 @@ Scene load_scene(const std::filesystem::path& path) {
         throw InputError(file + ": malformed JSON: " + what);
     }
     Loader loader;
-    loader.dir = path.parent_path();
+    loader.dir = dir;
     loader.file = file;
     Scene scene;
     const Node top(root, "", file);

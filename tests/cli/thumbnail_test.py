@@ -4,7 +4,10 @@ thumbnailer's command: a PNG at the asked size whatever the output's name, the f
 from the bytes where the name lies, the size and time limits, and no partial output.
 
 CORPUS is Debian's assimp-testmodels folder (/usr/share/assimp/models)."""
-import os, shutil, struct, subprocess, sys, zlib
+import os, shutil, subprocess, sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+from imgdiff import read_png  # noqa: E402
 
 exe, corpus, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
@@ -25,40 +28,12 @@ def run(*args, timeout=120):
     return subprocess.run([exe, 'thumbnail', *args], capture_output=True, text=True, timeout=timeout)
 
 
-def rgba(path):
-    """(width, height, rows of RGBA bytes) of an 8-bit RGBA PNG as stb writes it."""
-    data = open(path, 'rb').read()
-    assert data[:8] == b'\x89PNG\r\n\x1a\n', 'not a PNG'
-    w, h = struct.unpack('>II', data[16:24])
-    idat, at = b'', 8
-    while at < len(data):
-        n, kind = struct.unpack('>I4s', data[at:at + 8])
-        if kind == b'IDAT':
-            idat += data[at + 8:at + 8 + n]
-        at += 12 + n
-    raw, rows, prev = zlib.decompress(idat), [], bytearray(w * 4)
-    for y in range(h):
-        f, line = raw[y * (1 + w * 4)], bytearray(raw[y * (1 + w * 4) + 1:(y + 1) * (1 + w * 4)])
-        for i in range(len(line)):
-            a = line[i - 4] if i >= 4 else 0
-            b, c = prev[i], prev[i - 4] if i >= 4 else 0
-            if f == 1: line[i] = (line[i] + a) & 255
-            elif f == 2: line[i] = (line[i] + b) & 255
-            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(bytes(line))
-        prev = line
-    return w, h, rows
-
-
 def a_thumbnail(path, size):
     """Whether `path` is a size x size PNG: transparent corners, an opaque model in the middle."""
-    w, h, rows = rgba(path)
-    opaque = sum(1 for row in rows for x in range(w) if row[4 * x + 3] == 255)
-    return (w, h) == (size, size) and rows[0][3] == 0 and rows[-1][-1] == 0 and opaque > size * size // 20
+    w, h, ch, pixels = read_png(path)
+    alpha = pixels[3::4]
+    opaque = alpha.count(255)
+    return (w, h, ch) == (size, size, 4) and alpha[0] == 0 and alpha[-1] == 0 and opaque > size * size // 20
 
 
 def left_nothing(out):

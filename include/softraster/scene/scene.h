@@ -176,6 +176,9 @@ glm::vec3 shadow_offset(const ShadowSettings& s, const glm::vec3& travel);
 // Reads and validates a scene file; meshes and textures are resolved relative to it.
 // Throws InputError with one line naming the file and the JSON path or line.
 Scene load_scene(const std::filesystem::path& path);
+// The same for a scene's JSON text: its meshes and textures resolved relative to `dir`, its
+// errors naming `file` (the Python module's scenes given as dicts or strings).
+Scene parse_scene(const std::string& text, const std::filesystem::path& dir, const std::string& file);
 
 // Gives each object with a normal map a mesh with tangents (generate_tangents in mesh.h)
 // where its mesh has none; objects that share a mesh share the copy.

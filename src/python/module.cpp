@@ -1,0 +1,260 @@
+// The Python module `softraster` (its compiled part, softraster._softraster): scenes and model
+// files to NumPy arrays. Pictures are H x W x 4 uint8 (RGBA, row 0 at the top); the GIL is
+// released while a picture is drawn, so N Python threads drawing N pictures use N cores.
+// Bad input raises ValueError with the command line's one-line message; a missing file,
+// FileNotFoundError. (An importer that crashes takes the process with it: batches of
+// untrusted files belong in child processes, as softraster.dask runs them.)
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <glm/trigonometric.hpp>
+
+#include "cli/model_options.h"
+#include "softraster/error.h"
+#include "softraster/pipeline/resolve.h"
+#include "softraster/scene/model.h"
+#include "softraster/scene/scene.h"
+#include "softraster/scene/scene_renderer.h"
+
+namespace py = pybind11;
+namespace fs = std::filesystem;
+
+namespace softraster::python {
+namespace {
+
+unsigned threads_of(int threads) { return threads > 0 ? unsigned(threads) : std::max(1u, std::thread::hardware_concurrency()); }
+
+py::array_t<uint8_t> color_array(const Image& image) {
+    py::array_t<uint8_t> out({image.height, image.width, 4});
+    std::memcpy(out.mutable_data(), image.pixels.data(), image.pixels.size() * sizeof(Rgba8));
+    return out;
+}
+
+// Throws FileNotFoundError for a path that does not exist (ValueError is for what is in it).
+void require_file(const fs::path& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) {
+        PyErr_SetFromErrnoWithFilename(PyExc_FileNotFoundError, path.string().c_str());
+        throw py::error_already_set();
+    }
+}
+
+// A scene given as a dict, a JSON string or a path.
+Scene scene_of(const py::object& scene) {
+    if (py::isinstance<py::dict>(scene)) {
+        const std::string text = py::module_::import("json").attr("dumps")(scene).cast<std::string>();
+        return parse_scene(text, fs::current_path(), "<scene dict>");
+    }
+    if (py::isinstance<py::str>(scene)) {
+        const std::string text = scene.cast<std::string>();
+        const size_t first = text.find_first_not_of(" \t\r\n");
+        if (first != std::string::npos && text[first] == '{') return parse_scene(text, fs::current_path(), "<scene string>");
+    }
+    const fs::path path = py::module_::import("os").attr("fspath")(scene).cast<std::string>();
+    require_file(path);
+    return load_scene(path);
+}
+
+// The model options as keyword arguments, checked as the command line checks them.
+cli::ModelOptions model_options(const py::object& size, const std::string& view, int samples, const std::optional<std::string>& shading,
+                                const std::optional<std::string>& background, const std::string& color_space,
+                                const std::string& tone_mapping, float exposure, bool shadows, bool ssao) {
+    cli::ModelOptions o;
+    if (py::isinstance<py::int_>(size)) {
+        o.size = std::to_string(size.cast<int>());
+    } else {
+        const auto wh = size.cast<std::pair<int, int>>();
+        o.size = std::to_string(wh.first) + "x" + std::to_string(wh.second);
+    }
+    auto one_of = [](const std::string& what, const std::string& value, std::initializer_list<const char*> allowed) {
+        for (const char* a : allowed)
+            if (value == a) return;
+        std::string list;
+        for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+        throw InputError(what + " " + value + ": expected one of " + list);
+    };
+    one_of("view", view, {"three-quarter", "front", "back", "left", "right", "top", "bottom", "iso"});
+    o.view = view;
+    if (samples != 1 && samples != 2 && samples != 4 && samples != 8 && samples != 16)
+        throw InputError("samples " + std::to_string(samples) + ": expected 1, 2, 4, 8 or 16");
+    o.samples = samples;
+    if (shading) {
+        one_of("shading", *shading, {"unlit", "flat", "gouraud", "lambert", "blinn_phong", "phong", "pbr", "normals", "depth"});
+        o.shading = *shading;
+    }
+    if (background) o.background = *background;
+    one_of("color_space", color_space, {"srgb", "linear"});
+    o.color_space = color_space;
+    one_of("tone_mapping", tone_mapping, {"none", "reinhard", "aces"});
+    o.tone_mapping = tone_mapping;
+    if (!(exposure > 0.0f)) throw InputError("exposure: expected a positive number");
+    o.exposure = exposure;
+    o.shadows = shadows;
+    o.ambient_occlusion = ssao;
+    return o;
+}
+
+// The camera of a picture: intrinsics K (pixels, origin at the top-left corner of the top-left
+// pixel, x right, y down) and world-to-camera matrices in OpenGL's convention (camera looks
+// down -z, y up) and OpenCV's (looks down +z, y down): x_cv = diag(1, -1, -1, 1) x_gl.
+py::dict camera_of(const Scene& scene) {
+    const Camera& c = scene.camera;
+    py::dict d;
+    py::array_t<double> K({3, 3});
+    auto k = K.mutable_unchecked<2>();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) k(i, j) = 0.0;
+    if (!c.orthographic) {
+        const double f = 0.5 * scene.height / std::tan(glm::radians(double(c.fov_y)) * 0.5);
+        k(0, 0) = f, k(1, 1) = f, k(0, 2) = 0.5 * scene.width, k(1, 2) = 0.5 * scene.height, k(2, 2) = 1.0;
+    }
+    const glm::mat4 view = view_matrix(c);
+    py::array_t<double> gl({4, 4}), cv({4, 4});
+    auto g = gl.mutable_unchecked<2>();
+    auto v = cv.mutable_unchecked<2>();
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            g(i, j) = view[j][i];  // (glm is column-major)
+            v(i, j) = (i == 1 || i == 2 ? -1.0 : 1.0) * view[j][i];
+        }
+    d["K"] = K;
+    d["world_to_camera"] = cv;
+    d["world_to_camera_gl"] = gl;
+    d["width"] = scene.width, d["height"] = scene.height;
+    d["near"] = c.near, d["far"] = c.far, d["orthographic"] = c.orthographic;
+    return d;
+}
+
+// Distance along the view axis (positive, world units) from a window depth z in [0, 1];
+// inf where nothing was drawn (z = 1, the cleared depth).
+float view_depth(float z, const Camera& c) {
+    if (z >= 1.0f) return std::numeric_limits<float>::infinity();
+    const double n = c.near, f = c.far, ndc = 2.0 * z - 1.0;
+    if (c.orthographic) return float(n + (ndc + 1.0) * 0.5 * (f - n));
+    return float(2.0 * n * f / ((f + n) - ndc * (f - n)));
+}
+
+struct Rendered {
+    Image color;
+    GrayImage<float> depth;
+};
+// Draws the scene with the GIL released.
+Rendered draw(const Scene& scene, int threads, bool want_depth) {
+    py::gil_scoped_release unlocked;
+    const SceneRenderer renderer(scene, threads_of(threads));
+    Framebuffer fb = renderer.make_framebuffer();
+    renderer.render(fb);
+    Rendered r{renderer.resolve(fb), {}};
+    if (want_depth) r.depth = depth_picture(fb);
+    return r;
+}
+
+py::dict outputs(const Scene& scene, const Rendered& r, bool depth) {
+    py::dict d;
+    d["color"] = color_array(r.color);
+    if (depth) {
+        if (r.depth.width != r.color.width)
+            throw InputError("depth: not available for supersampled scenes");
+        py::array_t<float> z({r.depth.height, r.depth.width}), distance({r.depth.height, r.depth.width});
+        float* zp = z.mutable_data();
+        float* dp = distance.mutable_data();
+        for (size_t i = 0; i < r.depth.values.size(); ++i) zp[i] = r.depth.values[i], dp[i] = view_depth(r.depth.values[i], scene.camera);
+        d["depth"] = distance;
+        d["window_z"] = z;
+    }
+    d["camera"] = camera_of(scene);
+    return d;
+}
+
+class PyModel {
+public:
+    PyModel(const py::object& path, const std::string& color_space) {
+        path_ = py::module_::import("os").attr("fspath")(path).cast<std::string>();
+        require_file(path_);
+        color_ = color_space == "linear" ? ColorSpace::Linear : ColorSpace::Srgb;
+        if (color_space != "srgb" && color_space != "linear") throw InputError("color_space " + color_space + ": expected srgb or linear");
+        py::gil_scoped_release unlocked;
+        model_ = load_model(path_, MissingTexture::Warn, color_);
+    }
+    py::dict render(const py::object& size, const std::string& view, int samples, const std::optional<std::string>& shading,
+                    const std::optional<std::string>& background, const std::string& tone_mapping, float exposure, bool shadows,
+                    bool ssao, bool depth, int threads) const {
+        const cli::ModelOptions o = model_options(size, view, samples, shading, background,
+                                                  color_ == ColorSpace::Linear ? "linear" : "srgb", tone_mapping, exposure, shadows, ssao);
+        const Scene scene = model_scene(model_, o.picture(512));
+        return outputs(scene, draw(scene, threads, depth), depth);
+    }
+    std::vector<std::string> warnings() const { return model_.warnings; }
+    size_t objects() const { return model_.objects.size(); }
+    std::string path() const { return path_.string(); }
+
+private:
+    fs::path path_;
+    ColorSpace color_ = ColorSpace::Srgb;
+    Model model_;
+};
+
+}  // namespace
+}  // namespace softraster::python
+
+PYBIND11_MODULE(_softraster, m) {
+    using namespace softraster;
+    using namespace softraster::python;
+    m.doc() = "softraster's compiled part: see help(softraster)";
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const InputError& e) {
+            PyErr_SetString(PyExc_ValueError, e.what());
+        }
+    });
+    m.def(
+        "render",
+        [](const py::object& scene, int threads, bool depth) -> py::object {
+            const Scene s = scene_of(scene);
+            const Rendered r = draw(s, threads, depth);
+            if (!depth) return color_array(r.color);
+            return outputs(s, r, true);
+        },
+        py::arg("scene"), py::kw_only(), py::arg("threads") = 0, py::arg("depth") = false);
+    m.def(
+        "render_model",
+        [](const py::object& path, const py::object& size, const std::string& view, int samples, const std::optional<std::string>& shading,
+           const std::optional<std::string>& background, const std::string& color_space, const std::string& tone_mapping, float exposure,
+           bool shadows, bool ssao, int threads) -> py::object {
+            const PyModel model(path, color_space);
+            const py::dict out = model.render(size, view, samples, shading, background, tone_mapping, exposure, shadows, ssao, false, threads);
+            return out["color"];  // (a py::object: an accessor into the dict would outlive it)
+        },
+        py::arg("path"), py::kw_only(), py::arg("size") = 512, py::arg("view") = "three-quarter", py::arg("samples") = 4,
+        py::arg("shading") = py::none(), py::arg("background") = py::none(), py::arg("color_space") = "srgb",
+        py::arg("tone_mapping") = "none", py::arg("exposure") = 1.0f, py::arg("shadows") = false, py::arg("ssao") = false,
+        py::arg("threads") = 0);
+    py::class_<PyModel>(m, "Model",
+                        "A model file read once (Model(path, color_space='srgb')), to be drawn from many cameras with render().\n"
+                        "Raises FileNotFoundError or ValueError (a file assimp cannot read, or with nothing to draw).")
+        .def(py::init<const py::object&, const std::string&>(), py::arg("path"), py::kw_only(), py::arg("color_space") = "srgb")
+        .def("render", &PyModel::render, py::kw_only(), py::arg("size") = 512, py::arg("view") = "three-quarter", py::arg("samples") = 4,
+             py::arg("shading") = py::none(), py::arg("background") = py::none(), py::arg("tone_mapping") = "none",
+             py::arg("exposure") = 1.0f, py::arg("shadows") = false, py::arg("ssao") = false, py::arg("depth") = false,
+             py::arg("threads") = 0,
+             "Draws the model, framed from `view`, with the options of softraster.render_model.\n"
+             "Returns a dict: 'color' (H x W x 4 uint8), 'camera' (K, world_to_camera in OpenCV's convention,\n"
+             "world_to_camera_gl in OpenGL's), and with depth=True 'depth' (H x W float32 view-axis distance,\n"
+             "inf where empty) and 'window_z'. See help(softraster) for the conventions.")
+        .def_property_readonly("warnings", &PyModel::warnings, "What could not be used (a texture out of reach: drawn untextured)")
+        .def_property_readonly("objects", &PyModel::objects, "How many objects (a mesh placed by a node) the model has")
+        .def_property_readonly("path", &PyModel::path);
+    m.attr("__version__") = SOFTRASTER_VERSION;
+}

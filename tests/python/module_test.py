@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""module_test.py SOFTRASTER PYTHON_DIR CORPUS WORKDIR: the Python module against the command
+line (the same pictures, byte for byte), depth and cameras, errors, and renders from several
+Python threads at once."""
+import json, os, shutil, subprocess, sys, threading
+
+exe, python_dir, corpus, work = sys.argv[1:5]
+sys.path.insert(0, python_dir)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+import numpy as np  # noqa: E402
+import softraster  # noqa: E402
+from imgdiff import read_png  # noqa: E402
+
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+failures = []
+DUCK = os.path.join(corpus, 'Collada', 'duck.dae')
+
+
+def check(name, ok, detail=''):
+    if not ok:
+        failures.append('%s %s' % (name, detail))
+
+
+def cli_picture(*args):
+    out = os.path.join(work, 'cli.png')
+    r = subprocess.run([exe, 'render', *args, '-o', out], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    w, h, ch, pixels = read_png(out)
+    return np.frombuffer(bytes(pixels), np.uint8).reshape(h, w, ch)
+
+
+# A plane at z = -5 seen by a camera at the origin looking down -z (fov 60, 64 x 48).
+scene = {"version": 1, "image": {"width": 64, "height": 48, "background": [0, 0, 0, 1]},
+         "camera": {"eye": [0, 0, 0], "target": [0, 0, -1], "fov_y": 60, "near": 0.5, "far": 50},
+         "objects": [{"builtin": {"type": "plane", "size": 2}, "transform": {"translate": [0, 0, -5], "rotate": [90, 0, 0]},
+                      "material": {"shading": "unlit", "color": [1, 0.5, 0.25, 1]}}]}
+path = os.path.join(work, 'plane.json')
+json.dump(scene, open(path, 'w'))
+want = cli_picture(path)
+for given, what in [(scene, 'dict'), (json.dumps(scene), 'JSON string'), (path, 'path'), (__import__('pathlib').Path(path), 'Path')]:
+    got = softraster.render(given)
+    check('render(%s)' % what, got.dtype == np.uint8 and got.shape == (48, 64, 4) and np.array_equal(got, want), got.shape)
+
+# Depth: 5 on the plane, inf around it; the camera's intrinsics and pose.
+out = softraster.render(scene, depth=True)
+d, color = out['depth'], out['color']
+on = color[:, :, 0] > 0
+check('depth on the plane', on.any() and np.allclose(d[on], 5.0, rtol=1e-4), d[on][:5] if on.any() else 'nothing drawn')
+check('depth where nothing is drawn', (~on).any() and np.isinf(d[~on]).all())
+check('window z where nothing is drawn', np.all(out['window_z'][~on] == 1.0))
+cam = out['camera']
+f = 24 / np.tan(np.radians(30))
+check('K', np.allclose(cam['K'], [[f, 0, 32], [0, f, 24], [0, 0, 1]]), cam['K'])
+check('world_to_camera (OpenCV)', np.allclose(cam['world_to_camera'], np.diag([1, -1, -1, 1])), cam['world_to_camera'])
+check('world_to_camera_gl', np.allclose(cam['world_to_camera_gl'], np.eye(4)), cam['world_to_camera_gl'])
+# Re-projection: each drawn pixel's point, from depth and K, lies on the plane (world z = -5)
+# and inside its square (|x|, |y| <= 1).
+v, u = np.nonzero(on)
+rays = np.linalg.inv(cam['K']) @ np.stack([u + 0.5, v + 0.5, np.ones_like(u, dtype=float)])
+points_cv = rays * d[v, u]
+world = np.linalg.inv(cam['world_to_camera']) @ np.vstack([points_cv, np.ones(len(u))])
+check('re-projected points on the plane', np.allclose(world[2], -5, atol=1e-3) and np.abs(world[:2]).max() <= 1.02, world[:, :3])
+
+# Model files: the same picture as `softraster render MODEL`; a Model drawn from many cameras.
+got = softraster.render_model(DUCK, size=(80, 60), view='front', samples=1)
+check('render_model', np.array_equal(got, cli_picture(DUCK, '--size', '80x60', '--view', 'front', '--samples', '1')))
+model = softraster.Model(DUCK)
+for view in ['left', 'top']:
+    r = model.render(size=40, view=view, depth=True)
+    check('Model.render %s' % view, np.array_equal(r['color'], cli_picture(DUCK, '--size', '40', '--view', view))
+          and r['depth'].shape == (40, 40) and np.isfinite(r['depth']).any() and r['camera']['K'].shape == (3, 3))
+check('Model.objects', model.objects >= 1 and model.path == DUCK)
+
+# Errors: ValueError with the command line's one line, FileNotFoundError.
+for call, kind, text in [(lambda: softraster.render({"version": 3}), ValueError, 'version'),
+                         (lambda: softraster.render('{"version": 1,'), ValueError, 'malformed JSON'),
+                         (lambda: softraster.render(os.path.join(work, 'missing.json')), FileNotFoundError, 'missing.json'),
+                         (lambda: softraster.render_model(os.path.join(work, 'missing.glb')), FileNotFoundError, 'missing.glb'),
+                         (lambda: softraster.render_model(DUCK, view='sideways'), ValueError, 'sideways'),
+                         (lambda: softraster.render_model(DUCK, samples=3), ValueError, 'samples'),
+                         (lambda: softraster.render_model(DUCK, size=0), ValueError, 'size'),
+                         (lambda: softraster.Model(path), ValueError, 'plane.json')]:
+    try:
+        call()
+        failures.append('no %s for %s' % (kind.__name__, text))
+    except kind as e:
+        check('%s message' % kind.__name__, text in str(e) and '\n' not in str(e), str(e))
+    except Exception as e:  # noqa: BLE001
+        failures.append('%s for %s, not %s: %s' % (type(e).__name__, text, kind.__name__, e))
+
+# Several Python threads at once (the GIL released while drawing): each gets its own picture.
+views = ['front', 'back', 'left', 'right', 'top', 'iso']
+alone = {v: model.render(size=48, view=v, threads=1)['color'] for v in views}
+together = {}
+workers = [threading.Thread(target=lambda v=v: together.__setitem__(v, model.render(size=48, view=v, threads=1)['color'])) for v in views]
+for t in workers:
+    t.start()
+for t in workers:
+    t.join()
+check('threads', all(np.array_equal(alone[v], together.get(v)) for v in views))
+
+# help() answers: the options and conventions are documented.
+check('docstrings', 'view:' in softraster.render_model.__doc__ and 'world_to_camera' in softraster.__doc__
+      and 'depth' in softraster.Model.render.__doc__)
+
+for f in failures:
+    print('FAIL:', f)
+print('%d passed, %d failed' % (0 if failures else 1, len(failures)))
+sys.exit(1 if failures else 0)
