@@ -38,7 +38,7 @@ install(FILES ${PROJECT_BINARY_DIR}/softraster.pc DESTINATION ${CMAKE_INSTALL_LI
 
 # The commands, each with a man page. The test cli.man_pages checks this list against the
 # command line's and every page against its command's --help.
-set(SOFTRASTER_COMMANDS render showcase bench thumbnails thumbnail animate view completion)
+set(SOFTRASTER_COMMANDS render showcase bench thumbnails thumbnail views animate view completion)
 find_program(HELP2MAN help2man)
 if(HELP2MAN)
   set(man_pages ${PROJECT_BINARY_DIR}/man/softraster.1)

@@ -7,7 +7,7 @@ context:
     import softraster
     rgba = softraster.render_model("duck.glb", size=(640, 480), view="front")
     model = softraster.Model("duck.glb")          # read once, drawn from many cameras
-    views = [model.render(view=v, depth=True) for v in ("front", "left", "top")]
+    shots = softraster.views(model, count=24, size=256, depth=True)   # as `softraster views` draws them
 
 Conventions:
   * color: H x W x 4 uint8 RGBA, row 0 at the top; sRGB-encoded unless color_space="linear".
@@ -28,9 +28,9 @@ child process (`softraster thumbnails`, or softraster.dask, which does so per ba
 The GIL is released while a picture is drawn: N Python threads drawing N pictures use N
 cores. Each call draws with `threads` worker threads (0: one per core).
 """
-from ._softraster import Model, __version__, render as _render, render_model as _render_model
+from ._softraster import Model, __version__, render as _render, render_model as _render_model, view_directions
 
-__all__ = ["render", "render_model", "Model", "__version__"]
+__all__ = ["render", "render_model", "Model", "views", "view_directions", "__version__"]
 
 
 def render(scene, *, threads=0, depth=False):
@@ -63,3 +63,24 @@ def render_model(path, *, size=512, view="three-quarter", samples=4, shading=Non
     return _render_model(path, size=size, view=view, samples=samples, shading=shading, background=background,
                          color_space=color_space, tone_mapping=tone_mapping, exposure=exposure, shadows=shadows,
                          ssao=ssao, threads=threads)
+
+
+def views(model, *, count=24, layout="sphere", seed=0, **options):
+    """Draws a model from `count` cameras, as the command `softraster views` does.
+
+    model: a Model, or a path (read once here). layout: "sphere" (evenly spread), "ring"
+    (20 degrees above the horizon) or "random" (uniform, the same for the same seed).
+    options: those of Model.render (size, samples, depth=True, ...); the background is
+    transparent unless given.
+
+    Returns a list of Model.render's dicts, each with its "direction" added.
+    """
+    if not isinstance(model, Model):
+        model = Model(model)
+    options.setdefault("background", "0,0,0,0")
+    shots = []
+    for d in view_directions(count, layout=layout, seed=seed):
+        shot = model.render(direction=d, **options)
+        shot["direction"] = d
+        shots.append(shot)
+    return shots

@@ -214,6 +214,27 @@ Run add_thumbnail(CLI::App& app) {
     return [opt] { return run_thumbnail(*opt); };
 }
 
+Run add_views(CLI::App& app) {
+    auto opt = std::make_shared<ViewsOptions>();
+    CLI::App* cmd = app.add_subcommand("views", "Render one model file from many cameras for data sets: pictures, depth, masks and cameras.json");
+    cmd->add_option("input", opt->input, "Model file (glTF, GLB, OBJ, FBX, STL, DAE, 3DS, PLY...)")->required();
+    cmd->add_option("--out", opt->out, "Output folder: NNN.png, NNN_depth.exr, NNN_mask.png and cameras.json")->required();
+    cmd->add_option("--count", opt->count, "Views")->check(CLI::Range(1, 100000))->capture_default_str();
+    cmd->add_option("--layout", opt->layout, "Cameras evenly over a sphere, on a ring 20 degrees above the horizon, or at random")
+        ->check(CLI::IsMember({"sphere", "ring", "random"}))
+        ->capture_default_str();
+    cmd->add_option("--seed", opt->seed, "Seed of --layout random (the same views for the same seed)")->capture_default_str();
+    cmd->add_flag("--depth", opt->depth, "Also write each view's depth: float EXR, the view-axis distance in world units, inf where empty");
+    cmd->add_flag("--mask", opt->mask, "Also write each view's foreground mask: 8-bit PNG, 255 where the model covers the pixel");
+    add_threads_option(*cmd, opt->threads);
+    add_model_options(*cmd, opt->model, 512);
+    cmd->footer("Example: softraster views model.glb --count 24 --size 512 --out views/ --depth --mask\n"
+                "The background is transparent unless --background says otherwise; --view does not apply.\n"
+                "cameras.json: each view's K (pixels) and world-to-camera matrix (OpenCV's and OpenGL's conventions), "
+                "and the model's center and radius (its normalization).");
+    return model_command(opt, cmd, run_views);
+}
+
 // The command tree as plain data (command_tree.h).
 std::vector<std::string> choices_of(const CLI::Option& o) {  // IsMember's description: {a,b,c}
     std::vector<std::string> choices;
@@ -284,6 +305,7 @@ int run_command_line(int argc, char** argv) {
     const Run animate = add_animate(app);
     const Run view = add_view(app);
     const Run thumbnail = add_thumbnail(app);
+    const Run views = add_views(app);
     const Run completion = add_completion(app);
     try {
         app.parse(argc, argv);
@@ -305,6 +327,7 @@ int run_command_line(int argc, char** argv) {
         if (app.got_subcommand("animate")) return animate();
         if (app.got_subcommand("view")) return view();
         if (app.got_subcommand("thumbnail")) return thumbnail();
+        if (app.got_subcommand("views")) return views();
         if (app.got_subcommand("completion")) return completion();
     } catch (const InputError& e) {
         std::cerr << "softraster: error: " << e.what() << "\n";

@@ -64,6 +64,14 @@ struct ThumbnailOptions {
 };
 int run_thumbnail(const ThumbnailOptions& opt);
 
+struct ViewsOptions {
+    std::string input, out, layout = "sphere";
+    int count = 24, seed = 0, threads = 0;
+    bool depth = false, mask = false;
+    ModelOptions model;
+};
+int run_views(const ViewsOptions& opt);
+
 // --threads: a count, or 0 for one thread per core.
 inline unsigned thread_count(int requested) {
     return requested > 0 ? unsigned(requested) : std::max(1u, std::thread::hardware_concurrency());

@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -17,8 +18,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <glm/trigonometric.hpp>
 
 #include "cli/model_options.h"
 #include "softraster/error.h"
@@ -111,38 +110,15 @@ cli::ModelOptions model_options(const py::object& size, const std::string& view,
 py::dict camera_of(const Scene& scene) {
     const Camera& c = scene.camera;
     py::dict d;
-    py::array_t<double> K({3, 3});
-    auto k = K.mutable_unchecked<2>();
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) k(i, j) = 0.0;
-    if (!c.orthographic) {
-        const double f = 0.5 * scene.height / std::tan(glm::radians(double(c.fov_y)) * 0.5);
-        k(0, 0) = f, k(1, 1) = f, k(0, 2) = 0.5 * scene.width, k(1, 2) = 0.5 * scene.height, k(2, 2) = 1.0;
-    }
-    const glm::mat4 view = view_matrix(c);
-    py::array_t<double> gl({4, 4}), cv({4, 4});
-    auto g = gl.mutable_unchecked<2>();
-    auto v = cv.mutable_unchecked<2>();
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) {
-            g(i, j) = view[j][i];  // (glm is column-major)
-            v(i, j) = (i == 1 || i == 2 ? -1.0 : 1.0) * view[j][i];
-        }
-    d["K"] = K;
-    d["world_to_camera"] = cv;
-    d["world_to_camera_gl"] = gl;
+    d["K"] = py::array(py::cast(camera_intrinsics(c, scene.width, scene.height)));
+    const auto cv = world_to_camera_cv(c);
+    d["world_to_camera"] = py::array(py::cast(cv));
+    auto gl = cv;
+    for (size_t j = 0; j < 4; ++j) gl[1][j] = -cv[1][j], gl[2][j] = -cv[2][j];
+    d["world_to_camera_gl"] = py::array(py::cast(gl));
     d["width"] = scene.width, d["height"] = scene.height;
     d["near"] = c.near, d["far"] = c.far, d["orthographic"] = c.orthographic;
     return d;
-}
-
-// Distance along the view axis (positive, world units) from a window depth z in [0, 1];
-// inf where nothing was drawn (z = 1, the cleared depth).
-float view_depth(float z, const Camera& c) {
-    if (z >= 1.0f) return std::numeric_limits<float>::infinity();
-    const double n = c.near, f = c.far, ndc = 2.0 * z - 1.0;
-    if (c.orthographic) return float(n + (ndc + 1.0) * 0.5 * (f - n));
-    return float(2.0 * n * f / ((f + n) - ndc * (f - n)));
 }
 
 struct Rendered {
@@ -169,7 +145,7 @@ py::dict outputs(const Scene& scene, const Rendered& r, bool depth) {
         py::array_t<float> z({r.depth.height, r.depth.width}), distance({r.depth.height, r.depth.width});
         float* zp = z.mutable_data();
         float* dp = distance.mutable_data();
-        for (size_t i = 0; i < r.depth.values.size(); ++i) zp[i] = r.depth.values[i], dp[i] = view_depth(r.depth.values[i], scene.camera);
+        for (size_t i = 0; i < r.depth.values.size(); ++i) zp[i] = r.depth.values[i], dp[i] = view_distance(r.depth.values[i], scene.camera);
         d["depth"] = distance;
         d["window_z"] = z;
     }
@@ -189,10 +165,16 @@ public:
     }
     py::dict render(const py::object& size, const std::string& view, int samples, const std::optional<std::string>& shading,
                     const std::optional<std::string>& background, const std::string& tone_mapping, float exposure, bool shadows,
-                    bool ssao, bool depth, int threads) const {
+                    bool ssao, bool depth, int threads, const std::optional<std::array<float, 3>>& direction) const {
         const cli::ModelOptions o = model_options(size, view, samples, shading, background,
                                                   color_ == ColorSpace::Linear ? "linear" : "srgb", tone_mapping, exposure, shadows, ssao);
-        const Scene scene = model_scene(model_, o.picture(512));
+        ModelPicture picture = o.picture(512);
+        if (direction) {
+            const glm::vec3 d((*direction)[0], (*direction)[1], (*direction)[2]);
+            if (!(glm::dot(d, d) > 0.0f) || !std::isfinite(glm::dot(d, d))) throw InputError("direction: expected a nonzero finite vector");
+            picture.to_eye = d;
+        }
+        const Scene scene = model_scene(model_, picture);
         return outputs(scene, draw(scene, threads, depth), depth);
     }
     std::vector<std::string> warnings() const { return model_.warnings; }
@@ -234,7 +216,8 @@ PYBIND11_MODULE(_softraster, m) {
            const std::optional<std::string>& background, const std::string& color_space, const std::string& tone_mapping, float exposure,
            bool shadows, bool ssao, int threads) -> py::object {
             const PyModel model(path, color_space);
-            const py::dict out = model.render(size, view, samples, shading, background, tone_mapping, exposure, shadows, ssao, false, threads);
+            const py::dict out =
+                model.render(size, view, samples, shading, background, tone_mapping, exposure, shadows, ssao, false, threads, std::nullopt);
             return out["color"];  // (a py::object: an accessor into the dict would outlive it)
         },
         py::arg("path"), py::kw_only(), py::arg("size") = 512, py::arg("view") = "three-quarter", py::arg("samples") = 4,
@@ -248,13 +231,23 @@ PYBIND11_MODULE(_softraster, m) {
         .def("render", &PyModel::render, py::kw_only(), py::arg("size") = 512, py::arg("view") = "three-quarter", py::arg("samples") = 4,
              py::arg("shading") = py::none(), py::arg("background") = py::none(), py::arg("tone_mapping") = "none",
              py::arg("exposure") = 1.0f, py::arg("shadows") = false, py::arg("ssao") = false, py::arg("depth") = false,
-             py::arg("threads") = 0,
-             "Draws the model, framed from `view`, with the options of softraster.render_model.\n"
+             py::arg("threads") = 0, py::arg("direction") = py::none(),
+             "Draws the model, framed from `view` (or from `direction`, a vector from the model's center toward the camera), with the options of softraster.render_model.\n"
              "Returns a dict: 'color' (H x W x 4 uint8), 'camera' (K, world_to_camera in OpenCV's convention,\n"
              "world_to_camera_gl in OpenGL's), and with depth=True 'depth' (H x W float32 view-axis distance,\n"
              "inf where empty) and 'window_z'. See help(softraster) for the conventions.")
         .def_property_readonly("warnings", &PyModel::warnings, "What could not be used (a texture out of reach: drawn untextured)")
         .def_property_readonly("objects", &PyModel::objects, "How many objects (a mesh placed by a node) the model has")
         .def_property_readonly("path", &PyModel::path);
+    m.def(
+        "view_directions",
+        [](int count, const std::string& layout, unsigned seed) {
+            std::vector<std::array<float, 3>> out;
+            for (const glm::vec3& d : view_directions(layout, count, seed)) out.push_back({d.x, d.y, d.z});
+            return out;
+        },
+        py::arg("count"), py::kw_only(), py::arg("layout") = "sphere", py::arg("seed") = 0,
+        "The camera directions of `softraster views` (unit vectors from the model's center, +y up): 'sphere' (evenly spread),\n"
+        "'ring' (20 degrees above the horizon) or 'random' (uniform, the same for a seed). Use with Model.render(direction=...).");
     m.attr("__version__") = SOFTRASTER_VERSION;
 }

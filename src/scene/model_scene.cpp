@@ -1,6 +1,7 @@
 // A model in a scene of its own: framed by its bounding sphere and lit by a default rig.
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <optional>
 #include <vector>
 
@@ -57,7 +58,11 @@ Scene model_scene(const Model& model, const ModelPicture& picture) {
 
     const BoundingSphere sphere = bounding_sphere(model.objects).value_or(BoundingSphere{});
     const float radius = sphere.radius > 0.0f ? sphere.radius : 1.0f;
-    const ViewDirection dir = direction(picture.view);
+    ViewDirection dir = direction(picture.view);
+    if (picture.to_eye) {  // (up is +y, or -z looking straight down or up)
+        dir.to_eye = glm::normalize(*picture.to_eye);
+        dir.up = std::abs(dir.to_eye.y) > 0.999f ? glm::vec3(0, 0, dir.to_eye.y > 0 ? -1 : 1) : glm::vec3(0, 1, 0);
+    }
     if (picture.ambient_occlusion) {
         AmbientOcclusionSettings ao;
         ao.radius = 0.1f * radius;
@@ -130,6 +135,30 @@ std::optional<BoundingSphere> bounding_sphere(const std::vector<SceneObject>& ob
     each_vertex([&](const glm::vec3& p) { r2 = std::max(r2, glm::dot(p - s.center, p - s.center)); });
     s.radius = std::sqrt(r2);
     return s;
+}
+
+std::vector<glm::vec3> view_directions(const std::string& layout, int count, unsigned seed) {
+    std::vector<glm::vec3> dirs;
+    const double golden = M_PI * (3.0 - std::sqrt(5.0));
+    std::mt19937 random(seed);
+    std::normal_distribution<double> normal;
+    for (int i = 0; i < count; ++i) {
+        if (layout == "sphere") {  // a Fibonacci lattice: evenly spread, pole to pole
+            const double y = 1.0 - 2.0 * (i + 0.5) / count, r = std::sqrt(1.0 - y * y), a = golden * i;
+            dirs.emplace_back(float(r * std::sin(a)), float(y), float(r * std::cos(a)));
+        } else if (layout == "ring") {  // around the vertical axis, 20 degrees above the horizon
+            const double a = 2.0 * M_PI * i / count, el = 20.0 * M_PI / 180.0;
+            dirs.emplace_back(float(std::sin(a) * std::cos(el)), float(std::sin(el)), float(std::cos(a) * std::cos(el)));
+        } else if (layout == "random") {  // uniform on the sphere (normalized Gaussian vectors), the same for a seed
+            glm::dvec3 v;
+            do v = {normal(random), normal(random), normal(random)};
+            while (glm::dot(v, v) < 1e-12);
+            dirs.emplace_back(glm::vec3(glm::normalize(v)));
+        } else {
+            throw InputError("layout " + layout + ": expected sphere, ring or random");
+        }
+    }
+    return dirs;
 }
 
 }  // namespace softraster

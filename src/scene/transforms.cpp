@@ -2,6 +2,7 @@
 // computed in double precision and stored as float.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -24,6 +25,33 @@ glm::mat4 model_matrix(const glm::vec3& translate, const glm::vec3& rotate_deg, 
 
 glm::mat4 view_matrix(const Camera& c) {  // gluLookAt
     return glm::mat4(glm::lookAtRH(glm::dvec3(c.eye), glm::dvec3(c.target), glm::dvec3(c.up)));
+}
+
+std::array<std::array<double, 3>, 3> camera_intrinsics(const Camera& c, int width, int height) {
+    std::array<std::array<double, 3>, 3> k{};
+    if (c.orthographic) return k;
+    const double f = 0.5 * height / std::tan(glm::radians(double(c.fov_y)) * 0.5);
+    k[0] = {f, 0.0, 0.5 * width};
+    k[1] = {0.0, f, 0.5 * height};
+    k[2] = {0.0, 0.0, 1.0};
+    return k;
+}
+
+float view_distance(float z, const Camera& c) {
+    if (z >= 1.0f) return std::numeric_limits<float>::infinity();
+    // Window z = (ndc z + 1) / 2, and ndc z the projection of the view-space depth d:
+    // perspective ndc = ((f + n) - 2 n f / d) / (f - n); orthographic ndc = (2 d - f - n) / (f - n).
+    const double n = c.near, f = c.far, ndc = 2.0 * z - 1.0;
+    if (c.orthographic) return float(0.5 * ((f - n) * ndc + f + n));
+    return float(2.0 * n * f / ((f + n) - ndc * (f - n)));
+}
+
+std::array<std::array<double, 4>, 4> world_to_camera_cv(const Camera& c) {
+    const glm::mat4 view = view_matrix(c);
+    std::array<std::array<double, 4>, 4> m{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) m[size_t(i)][size_t(j)] = (i == 1 || i == 2 ? -1.0 : 1.0) * double(view[j][i]);  // (glm: column-major)
+    return m;
 }
 
 glm::mat4 projection_matrix(const Camera& c, int width, int height) {

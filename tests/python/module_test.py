@@ -72,6 +72,18 @@ for view in ['left', 'top']:
           and r['depth'].shape == (40, 40) and np.isfinite(r['depth']).any() and r['camera']['K'].shape == (3, 3))
 check('Model.objects', model.objects >= 1 and model.path == DUCK)
 
+# Many views, as `softraster views` draws them: the same pictures and cameras.
+out = os.path.join(work, 'views')
+subprocess.run([exe, 'views', DUCK, '--out', out, '--count', '3', '--size', '40', '--layout', 'ring'], check=True, capture_output=True)
+cams = json.load(open(os.path.join(out, 'cameras.json')))
+shots = softraster.views(model, count=3, layout='ring', size=40)
+for shot, v in zip(shots, cams['views']):
+    w, h, ch, pixels = read_png(os.path.join(out, v['color']))
+    check('views picture %s' % v['color'], np.array_equal(shot['color'], np.frombuffer(bytes(pixels), np.uint8).reshape(h, w, ch)))
+    check('views camera %s' % v['color'], np.allclose(shot['camera']['K'], v['K']) and np.allclose(shot['camera']['world_to_camera'], v['world_to_camera'])
+          and np.allclose(shot['direction'], v['to_eye']))
+check('view_directions', len(softraster.view_directions(5, layout='random', seed=3)) == 5)
+
 # Errors: ValueError with the command line's one line, FileNotFoundError.
 for call, kind, text in [(lambda: softraster.render({"version": 3}), ValueError, 'version'),
                          (lambda: softraster.render('{"version": 1,'), ValueError, 'malformed JSON'),
@@ -80,7 +92,9 @@ for call, kind, text in [(lambda: softraster.render({"version": 3}), ValueError,
                          (lambda: softraster.render_model(DUCK, view='sideways'), ValueError, 'sideways'),
                          (lambda: softraster.render_model(DUCK, samples=3), ValueError, 'samples'),
                          (lambda: softraster.render_model(DUCK, size=0), ValueError, 'size'),
-                         (lambda: softraster.Model(path), ValueError, 'plane.json')]:
+                         (lambda: softraster.Model(path), ValueError, 'plane.json'),
+                         (lambda: softraster.view_directions(3, layout='cube'), ValueError, 'cube'),
+                         (lambda: model.render(direction=(0, 0, 0)), ValueError, 'direction')]:
     try:
         call()
         failures.append('no %s for %s' % (kind.__name__, text))

@@ -52,6 +52,7 @@ struct ModelPicture {
     glm::vec4 background{0.2f, 0.2f, 0.25f, 1.0f};  // as it appears in the picture (stored values / 255)
     int samples = 4;
     ModelView view = ModelView::ThreeQuarter;
+    std::optional<glm::vec3> to_eye;  // instead of `view`: the direction from the model's center to the camera
     std::optional<Shading> shading;  // none: each material's own (lit, or unlit where the file says)
     int camera = -1;                 // >= 0: the file's camera with this index instead of framing
     ColorSpace color_space = ColorSpace::Srgb;  // glTF's: color textures and the picture sRGB-encoded
@@ -70,5 +71,11 @@ struct ModelPicture {
 // get the format's default shadow map with the bias scaled to the model's size. Throws
 // InputError when `picture.camera` names no camera of the file.
 Scene model_scene(const Model& model, const ModelPicture& picture);
+
+// `count` directions from a model's center to cameras (unit vectors, +y up), for
+// ModelPicture::to_eye: "sphere" evenly over the sphere (a Fibonacci lattice, pole to pole),
+// "ring" around the vertical axis 20 degrees above the horizon, "random" uniform on the
+// sphere, the same for the same seed. Throws InputError for another layout.
+std::vector<glm::vec3> view_directions(const std::string& layout, int count, unsigned seed);
 
 }  // namespace softraster

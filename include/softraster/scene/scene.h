@@ -1,6 +1,7 @@
 // A scene as the scene format describes it (docs/scene-format.md, versions 1 and 2), already
 // validated and with its meshes and textures loaded.
 #pragma once
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -157,6 +158,16 @@ glm::mat4 model_matrix(const glm::vec3& translate, const glm::vec3& rotate_deg, 
 // gluLookAt and gluPerspective / glOrtho for the scene's camera and image aspect.
 glm::mat4 view_matrix(const Camera& c);
 glm::mat4 projection_matrix(const Camera& c, int width, int height);
+// A perspective camera's intrinsics for a width x height picture, row by row: fx = fy =
+// (height / 2) / tan(fov_y / 2), the principal point at the picture's center (pixel (u, v)
+// covers [u, u + 1) x [v, v + 1), v down). Zero for an orthographic camera.
+std::array<std::array<double, 3>, 3> camera_intrinsics(const Camera& c, int width, int height);
+// World to camera, row by row, in OpenCV's convention (the camera looks down +z, y down):
+// OpenGL's view_matrix with its y and z rows negated.
+std::array<std::array<double, 4>, 4> world_to_camera_cv(const Camera& c);
+// The distance along the camera's view axis (world units, positive) of a surface at window
+// depth z in [0, 1] (depth_picture in resolve.h); infinity at z = 1, where nothing was drawn.
+float view_distance(float z, const Camera& c);
 
 // Shadow maps (docs/scene-format.md "Shadows"): the world-space box of every triangle
 // object's finite vertices, and a light's view-projection S that frames it.
