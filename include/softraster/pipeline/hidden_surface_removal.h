@@ -138,8 +138,7 @@ uint64_t shading_pass(const LayoutShader<L>& shader, const BinnedTriangles<L::N>
     const int width = fb.width();
     const BlendSettings blend(state, fb.color_space());
     uint64_t shaded = 0;
-    static thread_local PendingGroups<N> thread_groups;  // (off the stack, its address found once, as in tile_back_end.h)
-    PendingGroups<N>& groups = thread_groups;
+    static thread_local PendingGroups<N> groups;  // (off the stack, as in tile_back_end.h)
     for_each_triangle_setup<Samples, true, L::kFlat>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t id) {
         const uint32_t me = owner_id(draw, id);
         if constexpr (Samples == 1 && L::kBatch) {  // eight pixels at a time, a batch of groups a call

@@ -82,20 +82,11 @@ struct TileBackEnd {
         const FragmentCalls<N>& calls = shader.code->path(WideLanes);
         uint64_t shaded = 0;
         // The groups waiting for their colors: one list per thread, off the stack (a few
-        // kilobytes that would otherwise sit among the tile loop's spilled registers). Its
-        // address is found once here: in the shared library the compiler would find it again
-        // at each use in the loops below (a TLS descriptor call per triangle), so the empty
-        // asm hides where the pointer came from.
-        static thread_local PendingGroups<N> thread_pending[2];
-        PendingGroups<N>* pending_at = thread_pending;
-        asm("" : "+r"(pending_at));
-        PendingGroups<N>(&pending)[2] = *reinterpret_cast<PendingGroups<N>(*)[2]>(pending_at);
+        // kilobytes that would otherwise sit among the tile loop's spilled registers).
+        static thread_local PendingGroups<N> pending[2];
         if constexpr (kQueueable && WideLanes) {
             if (strategy() == Strategy::FragmentQueue) {
-                static thread_local FragmentQueue<N, Samples> thread_queue;
-                FragmentQueue<N, Samples>* queue_at = &thread_queue;
-                asm("" : "+r"(queue_at));  // (as pending_at above)
-                FragmentQueue<N, Samples>& queue = *queue_at;
+                static thread_local FragmentQueue<N, Samples> queue;
                 queue.start(calls.groups, shader.self, fb);
                 // (Opaque: no constant varyings sought, see kConstant.)
                 for_each_triangle_setup<Samples, /*Planes=*/false, Flat>(triangles, state, tx, ty, rect, [&](TriangleSetup<N>& setup, uint32_t) {
