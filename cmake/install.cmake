@@ -10,16 +10,8 @@
 # Components, one per Debian package (cmake/package.cmake): bin, lib, oiio (the module) and dev.
 include(CMakePackageConfigHelpers)
 
-# Installed anywhere but /usr (a user's /usr/local or ~/.local, a test's staging folder),
-# the program finds the library relative to itself, with no ldconfig run. In /usr, as Debian
-# wants, it has no RPATH.
-if(NOT CMAKE_INSTALL_PREFIX STREQUAL "/usr")
-  file(RELATIVE_PATH lib_from_bin "${CMAKE_INSTALL_FULL_BINDIR}" "${CMAKE_INSTALL_FULL_LIBDIR}")
-  set_target_properties(softraster PROPERTIES INSTALL_RPATH "$ORIGIN/${lib_from_bin}")
-endif()
-
 install(TARGETS softraster RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT bin)
-install(TARGETS softraster_lib EXPORT softrasterTargets
+install(TARGETS softraster_shared EXPORT softrasterTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT lib NAMELINK_COMPONENT dev
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS softraster_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/softraster COMPONENT oiio)

@@ -1,6 +1,7 @@
 # The Debian packages (`cpack -G DEB`, run by scripts/package.sh), split as Debian splits a
 # library and its program:
-#   softraster              the program, its man pages, bash completion and the thumbnailer
+#   softraster              the program (its library linked in: faster frames, see
+#                           CMakeLists.txt), man pages, bash completion and the thumbnailer
 #   libsoftraster0.1        the shared library
 #   libsoftraster0.1-oiio   its OpenImageIO module, for SGI, DDS, TIFF, WebP, HDR and EXR
 #                           textures: recommended, not required, because OpenImageIO brings
@@ -10,8 +11,8 @@
 #   python3-softraster      the Python module (when pybind11 is installed)
 # The library's package is named after its SONAME (libsoftraster.so.0.1, CMakeLists.txt).
 # Each component sets its own Description (synopsis first).
-# Dependencies on Debian's libraries come from dpkg-shlibdeps; the program's on the
-# library, and the -dev package's on both the library and libglm-dev, are declared here.
+# Dependencies on Debian's libraries come from dpkg-shlibdeps; the -dev and Python packages'
+# on the library, and the -dev package's on libglm-dev, are declared here.
 set(soname_version ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME softraster)
@@ -41,7 +42,8 @@ COLLADA, 3DS, PLY and the other formats assimp reads) to pictures, videos
 and thumbnails with no GPU and no display. Its pictures match Mesa's
 llvmpipe. This package has the program, its man pages, bash completion,
 and a thumbnailer that shows 3D models in file managers.")
-set(CPACK_COMPONENT_BIN_DEPENDS lib)
+# (The program links the library's static archive: it needs no other package of ours.)
+set(CPACK_DEBIAN_BIN_PACKAGE_RECOMMENDS "libsoftraster${soname_version}-oiio (= ${PROJECT_VERSION})")
 
 set(CPACK_DEBIAN_LIB_PACKAGE_NAME libsoftraster${soname_version})
 set(CPACK_DEBIAN_LIB_PACKAGE_SECTION libs)
@@ -62,7 +64,6 @@ softraster is a 3D rasterizer that runs the whole graphics pipeline on
 the CPU. This package has the module through which it reads SGI, DDS,
 TIFF, WebP, HDR and EXR textures with OpenImageIO; PNG, JPEG, TGA and
 BMP need no module.")
-set(CPACK_COMPONENT_OIIO_DEPENDS lib)
 
 set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-softraster)
 set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)

@@ -20,7 +20,7 @@ set(python_dir ${PROJECT_BINARY_DIR}/python/softraster)
 pybind11_add_module(softraster_python MODULE NO_EXTRAS src/python/module.cpp src/cli/model_options.cpp)
 set_target_properties(softraster_python PROPERTIES OUTPUT_NAME _softraster LIBRARY_OUTPUT_DIRECTORY ${python_dir})
 target_include_directories(softraster_python PRIVATE src)
-target_link_libraries(softraster_python PRIVATE softraster_lib)
+target_link_libraries(softraster_python PRIVATE softraster_shared)
 target_compile_definitions(softraster_python PRIVATE SOFTRASTER_VERSION="${PROJECT_VERSION}")
 # (pybind11 builds modules with hidden visibility; our headers' inline statics must still
 # be the library's: the module only calls the library's functions, it instantiates no pipeline.)

@@ -22,8 +22,9 @@ Conventions:
 
 Errors: ValueError for a bad scene, model or option (the command line's one-line message),
 FileNotFoundError for a missing file. An importer that crashes on a malformed file cannot be
-caught in the same process: for batches of files from the wild, use the command line in a
-child process (`softraster thumbnails`, or softraster.dask, which does so per batch).
+caught in the same process: for batches of files from the wild, run the command line in
+a child process per file (`softraster thumbnails` does so, reporting each bad file and going
+on).
 
 The GIL is released while a picture is drawn: N Python threads drawing N pictures use N
 cores. Each call draws with `threads` worker threads (0: one per core).

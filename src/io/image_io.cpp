@@ -132,9 +132,9 @@ constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
 constexpr int kMaxSide = 65536;
 
 // The OpenImageIO module's decode function, opened on first use (oiio_module.h): from
-// $SOFTRASTER_MODULE_DIR, beside the program, beside this library and in its softraster/
-// folder (where `cmake --install` and the package put it, wherever the prefix is), then the
-// system's library path.
+// $SOFTRASTER_MODULE_DIR, beside the program and where it is installed relative to the
+// program, beside the shared library and in its softraster/ folder (where `cmake --install`
+// and the package put it, wherever the prefix is), then the system's library path.
 SoftrasterDecodeFn oiio_decoder(const std::string& name) {
     static SoftrasterDecodeFn decode = nullptr;
     static std::once_flag once;
@@ -143,7 +143,10 @@ SoftrasterDecodeFn oiio_decoder(const std::string& name) {
         if (const char* env = std::getenv("SOFTRASTER_MODULE_DIR")) dirs.emplace_back(env);
         std::error_code ec;
         const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-        if (!ec) dirs.push_back(exe.parent_path().string());
+        if (!ec) {
+            dirs.push_back(exe.parent_path().string());
+            dirs.push_back((exe.parent_path() / SOFTRASTER_MODULE_DIR_FROM_PROGRAM).lexically_normal().string());  // (installed)
+        }
         Dl_info self{};
         if (dladdr(reinterpret_cast<const void*>(&oiio_decoder), &self) && self.dli_fname) {
             const std::filesystem::path library = std::filesystem::absolute(self.dli_fname, ec).parent_path();

@@ -3,7 +3,7 @@
 // released while a picture is drawn, so N Python threads drawing N pictures use N cores.
 // Bad input raises ValueError with the command line's one-line message; a missing file,
 // FileNotFoundError. (An importer that crashes takes the process with it: batches of
-// untrusted files belong in child processes, as softraster.dask runs them.)
+// untrusted files belong in child processes, as `softraster thumbnails` draws them.)
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
