@@ -19,7 +19,9 @@ cp "$models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb" "$models/PLY/Wuson.pl
 in_root() { chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root "$@"; }
 in_root apt-get update -qq
 echo "apt install the packages"
-in_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq /tmp/dist/*.deb >/dev/null
+debs=$(cd "$root/tmp/dist" && printf '/tmp/dist/%s ' *.deb)
+# shellcheck disable=SC2086
+in_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $debs >/dev/null
 in_root softraster --version
 in_root softraster showcase -o /tmp/x.png
 in_root dpkg-query -W -f='${Installed-Size} kB with dependencies: ' softraster; in_root du -sh /usr | cut -f1
