@@ -5,9 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-export CCACHE_SLOPPINESS=pch_defines,time_macros
+source scripts/ccache.sh
 # The packages install to /usr; the tests and the course are not part of them.
 cmake -S . -B build-package -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr -DSOFTRASTER_TESTS=OFF \
       -DSOFTRASTER_COURSE=OFF "${launcher[@]}" >/dev/null

@@ -7,12 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --tests
 jobs=$(nproc)
-# ccache, when installed, keeps compiled files between builds (a rebuild after a small
-# change, or the same tree built again, takes seconds instead of minutes).
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-# (The sloppiness lets it cache the files built with a precompiled header, see CMakeLists.txt.)
-export CCACHE_SLOPPINESS=pch_defines,time_macros
+source scripts/ccache.sh
 run_suite() {  # name, cmake args...
   local dir="build-$1"; shift
   echo "=== $dir"
