@@ -1,6 +1,6 @@
-// The scene format (docs/scene-format.md), versions 1 and 2: JSON -> Scene, with every rule
-// checked. A version 1 file may not use a key version 2 added.
-// Errors name the file and the JSON path: "scene.json: objects[2].material.shininess: ...".
+// The scene format (docs/scene-format.md), versions 1 and 2: JSON -> Scene, every rule checked
+// (a version 1 file may not use a key version 2 added). Errors name the file and the JSON
+// path: "scene.json: objects[2].material.shininess: ...".
 #include <cmath>
 #include <map>
 #include <set>
@@ -364,9 +364,7 @@ struct Loader {
 
 }  // namespace
 
-Scene load_scene(const std::filesystem::path& path) {
-    return parse_scene(read_whole_file(path), path.parent_path(), path.string());
-}
+Scene load_scene(const std::filesystem::path& path) { return parse_scene(read_whole_file(path), path.parent_path(), path.string()); }
 
 Scene parse_scene(const std::string& text, const std::filesystem::path& dir, const std::string& file) {
     json root;

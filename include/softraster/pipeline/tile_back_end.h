@@ -1,12 +1,10 @@
-// The tile back end: one draw's triangles in one tile, each through the per-pixel stages
-// in order:
+// The tile back end: one draw's triangles in one tile, each through the per-pixel stages:
 //   triangle setup (triangle_setup.h) -> rasterization (rasterization.h, and
 //   rasterization_small.h for small triangles) -> early depth test (depth_stencil.h) ->
 //   interpolation (interpolation.h) -> fragment shading (fragment_shading.h, through the
 //   fragment queue of fragment_queue.h for small triangles) -> output merge (output_merge.h).
-// The tile's thread runs the draws of the tile one after another, in draw order
-// (Context::execute); runs of opaque draws with heavy overdraw take two passes instead
-// (hidden_surface_removal.h).
+// The tile's thread runs the tile's draws in draw order (Context::execute); runs of opaque
+// draws with heavy overdraw take two passes instead (hidden_surface_removal.h).
 //
 // It is compiled per varying layout (shader_layout.h) and sample count, not per shader or
 // blend mode: the shader's fragment code is called out of line, a batch of groups at a
