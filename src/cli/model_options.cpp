@@ -60,6 +60,16 @@ const std::map<std::string, Shading> kShadings = {
     {"unlit", Shading::Unlit}, {"flat", Shading::Flat}, {"gouraud", Shading::Gouraud}, {"lambert", Shading::Lambert},
     {"blinn_phong", Shading::BlinnPhong}, {"phong", Shading::Phong}, {"pbr", Shading::Pbr}, {"normals", Shading::Normals}, {"depth", Shading::Depth}};
 
+// The value of `name` in `table`, or InputError naming the choices (the command line checks
+// them before; the Python module's keyword arguments are checked here).
+template <class T>
+T choice(const std::map<std::string, T>& table, const std::string& what, const std::string& name) {
+    if (const auto it = table.find(name); it != table.end()) return it->second;
+    std::string names;
+    for (const auto& [key, value] : table) names += (names.empty() ? "" : ", ") + key;
+    throw InputError(what + " " + name + ": expected one of " + names);
+}
+
 }  // namespace
 
 
@@ -72,8 +82,8 @@ ModelPicture ModelOptions::picture(int default_size) const {
     p.tone_mapping.curve = tone_mapping == "reinhard" ? ToneCurve::Reinhard : tone_mapping == "aces" ? ToneCurve::Aces : ToneCurve::None;
     p.tone_mapping.exposure = exposure;
     p.samples = samples;
-    p.view = kViews.at(view);
-    if (!shading.empty()) p.shading = kShadings.at(shading);
+    p.view = choice(kViews, "view", view);
+    if (!shading.empty()) p.shading = choice(kShadings, "shading", shading);
     p.camera = camera;
     p.shadows = shadows;
     p.anisotropy = anisotropy;

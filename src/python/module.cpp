@@ -83,15 +83,11 @@ cli::ModelOptions model_options(const py::object& size, const std::string& view,
         for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
         throw InputError(what + " " + value + ": expected one of " + list);
     };
-    one_of("view", view, {"three-quarter", "front", "back", "left", "right", "top", "bottom", "iso"});
-    o.view = view;
+    o.view = view;  // (view and shading: checked by ModelOptions::picture)
     if (samples != 1 && samples != 2 && samples != 4 && samples != 8 && samples != 16)
         throw InputError("samples " + std::to_string(samples) + ": expected 1, 2, 4, 8 or 16");
     o.samples = samples;
-    if (shading) {
-        one_of("shading", *shading, {"unlit", "flat", "gouraud", "lambert", "blinn_phong", "phong", "pbr", "normals", "depth"});
-        o.shading = *shading;
-    }
+    if (shading) o.shading = *shading;
     if (background) o.background = *background;
     one_of("color_space", color_space, {"srgb", "linear"});
     o.color_space = color_space;
