@@ -169,7 +169,7 @@ inline simd::f8 specular_power(simd::f8 a, float b) {
 }
 
 inline void light_color(const LightSet& lights, int i, const LightVisibility<simd::f8>& vis, simd::vec3x8& out) {
-    const glm::vec3 c = lights.color[size_t(i)];
+    const glm::vec3& c = lights.color[size_t(i)];
     const simd::f8& v = vis[size_t(lights.shadow_of[size_t(i)])];
     out = {c.x * v, c.y * v, c.z * v};
 }
@@ -178,7 +178,7 @@ inline simd::vec3x8 diffuse_intensity(const LightSet& lights, const simd::vec3x8
     using simd::splat;
     simd::vec3x8 sum{splat(lights.ambient.x), splat(lights.ambient.y), splat(lights.ambient.z)};
     for (int i = 0; i < lights.count; ++i) {
-        const glm::vec3 l = lights.to_light[size_t(i)];
+        const glm::vec3& l = lights.to_light[size_t(i)];
         simd::vec3x8 c;
         light_color(lights, i, vis, c);
         const simd::f8 nl = simd::max(splat(0.0f), n.x * l.x + n.y * l.y + n.z * l.z);
@@ -208,7 +208,7 @@ inline simd::vec3x8 specular_term(const LightSet& lights, const simd::vec3x8& n,
     using simd::splat;
     simd::vec3x8 sum{splat(0.0f), splat(0.0f), splat(0.0f)};
     for (int i = 0; i < lights.count; ++i) {
-        const glm::vec3 l = lights.to_light[size_t(i)];
+        const glm::vec3& l = lights.to_light[size_t(i)];
         simd::vec3x8 c;
         light_color(lights, i, vis, c);
         const simd::vec3x8 k{c.x * specular.x, c.y * specular.y, c.z * specular.z};
