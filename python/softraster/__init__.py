@@ -20,6 +20,19 @@ Conventions:
     OpenGL's (down -z, y up); the two differ by diag(1, -1, -1, 1). A pixel (u, v) with depth
     d is the camera-space point d * inv(K) @ (u + 0.5, v + 0.5, 1) in OpenCV's convention.
 
+  * normals (normals="world" or "camera"): H x W x 3 float32, the unit normal of the surface at
+    each pixel's center (the interpolated vertex normal, or the face normal for flat shading),
+    in world space or in the camera's OpenCV axes (x right, y down, z forward); (0, 0, 0)
+    where nothing was drawn. Computed in float from the geometry, not read from a picture.
+  * ids (ids=True): "object_id", H x W int32, the index of the object at each pixel's center
+    (a scene's objects in file order; a model's meshes as placed by its nodes, Model.objects
+    of them), and "triangle_id", the triangle's index in that object's mesh; -1 where nothing
+    was drawn. They come from one more drawing, one sample per pixel: blended surfaces count
+    as opaque, alpha cutoffs are not applied, lines and points are left out.
+  * linear (linear=True): H x W x 4 float32, the picture's r, g, b as linear light (decoded
+    from sRGB, or c / 255 for a linear picture) and its alpha, 0 to 1. Its precision is the
+    8-bit picture's.
+
 Errors: ValueError for a bad scene, model or option (the command line's one-line message),
 FileNotFoundError for a missing file. An importer that crashes on a malformed file cannot be
 caught in the same process: for batches of files from the wild, run the command line in
@@ -34,18 +47,22 @@ from ._softraster import Model, __version__, render as _render, render_model as 
 __all__ = ["render", "render_model", "Model", "views", "view_directions", "__version__"]
 
 
-def render(scene, *, threads=0, depth=False):
+def render(scene, *, threads=0, depth=False, normals=None, ids=False, linear=False):
     """Draws a scene in softraster's scene format (docs/scene-format.md).
 
     scene: a dict, a JSON string, or a path to a .json file. Meshes and textures named in a
     dict or a string are found relative to the current folder; in a file, relative to it.
     threads: worker threads for this picture (0: one per core).
     depth: also return the depth and the camera (see the module's conventions).
+    normals: None, "world" or "camera": also return the surface normals.
+    ids: also return "object_id" and "triangle_id". linear: also return "linear", the
+    picture as linear float32.
 
-    Returns the picture, H x W x 4 uint8; with depth=True a dict with "color", "depth",
-    "window_z" and "camera".
+    Returns the picture, H x W x 4 uint8; with any of the others a dict with "color", those
+    asked for ("depth" and "window_z", "normals", "object_id" and "triangle_id", "linear")
+    and "camera".
     """
-    return _render(scene, threads=threads, depth=depth)
+    return _render(scene, threads=threads, depth=depth, normals=normals, ids=ids, linear=linear)
 
 
 def render_model(path, *, size=512, view="three-quarter", samples=4, shading=None, background=None,

@@ -13,7 +13,8 @@ Size = Union[int, tuple[int, int]]
 PathType = Union[str, PathLike[str]]
 
 def render(scene: Union[dict[str, Any], str, PathLike[str]], *, threads: int = 0,
-           depth: bool = False) -> Union[npt.NDArray[np.uint8], dict[str, Any]]: ...
+           depth: bool = False, normals: Optional[Literal["world", "camera"]] = None, ids: bool = False,
+           linear: bool = False) -> Union[npt.NDArray[np.uint8], dict[str, Any]]: ...
 
 def render_model(path: PathType, *, size: Size = 512, view: View = "three-quarter", samples: int = 4,
                  shading: Optional[Shading] = None, background: Optional[str] = None,
@@ -26,8 +27,10 @@ class Model:
     def render(self, *, size: Size = 512, view: View = "three-quarter", samples: int = 4,
                shading: Optional[Shading] = None, background: Optional[str] = None,
                tone_mapping: Literal["none", "reinhard", "aces"] = "none", exposure: float = 1.0,
-               shadows: bool = False, ssao: bool = False, depth: bool = False, threads: int = 0,
+               shadows: bool = False, ssao: bool = False, depth: bool = False,
+               normals: Optional[Literal["world", "camera"]] = None, ids: bool = False, linear: bool = False, threads: int = 0,
                direction: Optional[tuple[float, float, float]] = None) -> dict[str, Any]: ...
+    def mesh(self, object: int) -> dict[str, Any]: ...
     @property
     def warnings(self) -> list[str]: ...
     @property

@@ -218,17 +218,26 @@ Run add_views(CLI::App& app) {
     auto opt = std::make_shared<ViewsOptions>();
     CLI::App* cmd = app.add_subcommand("views", "Render one model file from many cameras for data sets: pictures, depth, masks and cameras.json");
     cmd->add_option("input", opt->input, "Model file (glTF, GLB, OBJ, FBX, STL, DAE, 3DS, PLY...)")->required();
-    cmd->add_option("--out", opt->out, "Output folder: NNN.png, NNN_depth.exr, NNN_mask.png and cameras.json")->required();
+    cmd->add_option("--out", opt->out, "Output folder: NNN.png, NNN_depth.exr, NNN_normals.exr, NNN_mask.png and cameras.json")->required();
     cmd->add_option("--count", opt->count, "Views")->check(CLI::Range(1, 100000))->capture_default_str();
     cmd->add_option("--layout", opt->layout, "Cameras evenly over a sphere, on a ring 20 degrees above the horizon, or at random")
         ->check(CLI::IsMember({"sphere", "ring", "random"}))
         ->capture_default_str();
     cmd->add_option("--seed", opt->seed, "Seed of --layout random (the same views for the same seed)")->capture_default_str();
-    cmd->add_flag("--depth", opt->depth, "Also write each view's depth: float EXR, the view-axis distance in world units, inf where empty");
+    cmd->add_flag("--depth", opt->depth, "Also write each view's depth: the view-axis distance in world units, inf (EXR) or 0 (PNG) where empty");
+    cmd->add_flag("--normals", opt->normals, "Also write each view's surface normals at the pixel centers, unit, 0 where empty");
+    cmd->add_option("--normals-space", opt->normals_space, "world, or camera (OpenCV's axes: x right, y down, z forward)")
+        ->check(CLI::IsMember({"world", "camera"}))
+        ->capture_default_str();
+    cmd->add_option("--format", opt->format,
+                    "Depth and normals as float EXR, or 16-bit PNG (depth in steps of the view's depth_scale in cameras.json, "
+                    "normals as 0.5 n + 0.5)")
+        ->check(CLI::IsMember({"exr", "png16"}))
+        ->capture_default_str();
     cmd->add_flag("--mask", opt->mask, "Also write each view's foreground mask: 8-bit PNG, 255 where the model covers the pixel");
     add_threads_option(*cmd, opt->threads);
     add_model_options(*cmd, opt->model, 512);
-    cmd->footer("Example: softraster views model.glb --count 24 --size 512 --out views/ --depth --mask\n"
+    cmd->footer("Example: softraster views model.glb --count 24 --size 512 --out views/ --depth --normals --mask\n"
                 "The background is transparent unless --background says otherwise; --view does not apply.\n"
                 "cameras.json: each view's K (pixels) and world-to-camera matrix (OpenCV's and OpenGL's conventions), "
                 "and the model's center and radius (its normalization).");

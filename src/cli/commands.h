@@ -67,7 +67,8 @@ int run_thumbnail(const ThumbnailOptions& opt);
 struct ViewsOptions {
     std::string input, out, layout = "sphere";
     int count = 24, seed = 0, threads = 0;
-    bool depth = false, mask = false;
+    bool depth = false, normals = false, mask = false;
+    std::string normals_space = "world", format = "exr";  // depth and normals: exr or png16
     ModelOptions model;
 };
 int run_views(const ViewsOptions& opt);

@@ -1,6 +1,8 @@
 // softraster views: one model from many cameras, for data sets (multi-view training data,
-// previews): color pictures, and on request depth and foreground masks, with cameras.json
+// previews): color pictures, and on request depth, normals and foreground masks, with cameras.json
 // holding each view's intrinsics and pose so that depth can be re-projected to points.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +20,7 @@
 #include "softraster/pipeline/resolve.h"
 #include "softraster/scene/model.h"
 #include "softraster/scene/scene_renderer.h"
+#include "softraster/scene/surface_ids.h"
 
 namespace softraster::cli {
 namespace {
@@ -29,6 +32,39 @@ json rows(const auto& matrix) {
     json out = json::array();
     for (const auto& row : matrix) out.push_back(row);
     return out;
+}
+
+// The two file formats of depth and normals (--format).
+void write_depth(const GrayImage<float>& distance, const fs::path& stem, bool png16, double scale, json& view) {
+    if (!png16) {
+        write_gray(distance, fs::path(stem).concat("_depth.exr"));
+        view["depth"] = fs::path(stem).concat("_depth.exr").filename().string();
+        return;
+    }
+    GrayImage<uint16_t> steps{distance.width, distance.height, std::vector<uint16_t>(distance.values.size(), 0)};
+    for (size_t p = 0; p < steps.values.size(); ++p)
+        if (std::isfinite(distance.values[p])) steps.values[p] = uint16_t(std::clamp(std::lround(distance.values[p] / scale), 1l, 65535l));
+    write_gray(steps, fs::path(stem).concat("_depth.png"));
+    view["depth"] = fs::path(stem).concat("_depth.png").filename().string();
+    view["depth_scale"] = scale;
+}
+
+void write_normals(const Scene& scene, const SurfaceIds& ids, NormalSpace space, const fs::path& stem, bool png16, json& view) {
+    const std::vector<glm::vec3> normals = surface_normals(scene, ids, space);
+    const fs::path path = fs::path(stem).concat(png16 ? "_normals.png" : "_normals.exr");
+    if (png16) {  // 0.5 n + 0.5 in 16 bits; (0, 0, 0), no unit vector's code, where empty
+        std::vector<uint16_t> rgb(3 * normals.size(), 0);
+        for (size_t p = 0; p < normals.size(); ++p)
+            if (ids.object[p] >= 0)
+                for (size_t k = 0; k < 3; ++k) rgb[3 * p + k] = uint16_t(std::lround((0.5 * normals[p][int(k)] + 0.5) * 65535.0));
+        write_rgb(scene.width, scene.height, rgb, path);
+    } else {
+        std::vector<float> rgb(3 * normals.size());
+        for (size_t p = 0; p < normals.size(); ++p)
+            for (size_t k = 0; k < 3; ++k) rgb[3 * p + k] = normals[p][int(k)];
+        write_rgb(scene.width, scene.height, rgb, path);
+    }
+    view["normals"] = path.filename().string();
 }
 
 }  // namespace
@@ -48,7 +84,10 @@ int run_views(const ViewsOptions& opt) {
                     {"normalization", {{"center", {sphere.center.x, sphere.center.y, sphere.center.z}}, {"radius", sphere.radius}}},
                     {"conventions", "K in pixels, pixel (u, v) covering [u, u + 1) x [v, v + 1), v down; world_to_camera: OpenCV "
                                     "(camera looks down +z, y down); world_to_camera_gl: OpenGL (down -z, y up); depth: "
-                                    "view-axis distance in world units, float EXR, inf where empty"},
+                                    "view-axis distance in world units (EXR: float, inf where empty; PNG: 16-bit steps of "
+                                    "depth_scale, 0 where empty); normals: unit, at the pixel centers, in normals_space "
+                                    "(EXR: float R, G, B = x, y, z; PNG: 16-bit 0.5 n + 0.5), 0 where empty"},
+                    {"normals_space", opt.normals_space},
                     {"views", json::array()}};
     const std::vector<glm::vec3> dirs = view_directions(opt.layout, opt.count, unsigned(opt.seed));
     Progress progress{dirs.size(), "views"};
@@ -69,12 +108,16 @@ int run_views(const ViewsOptions& opt) {
         for (size_t c = 0; c < 4; ++c) gl[1][c] = -gl[1][c].get<double>(), gl[2][c] = -gl[2][c].get<double>();
         view["world_to_camera_gl"] = gl;
         write_png(color, fs::path(opt.out) / (std::string(stem) + ".png"));
+        const fs::path stem_path = fs::path(opt.out) / stem;
+        const bool png16 = opt.format == "png16";
         if (opt.depth) {
             GrayImage<float> depth = depth_picture(fb);
             for (float& z : depth.values) z = view_distance(z, scene.camera);
-            write_gray(depth, fs::path(opt.out) / (std::string(stem) + "_depth.exr"));
-            view["depth"] = std::string(stem) + "_depth.exr";
+            write_depth(depth, stem_path, png16, double(scene.camera.far) / 65535.0, view);
         }
+        if (opt.normals)
+            write_normals(scene, surface_ids(scene, thread_count(opt.threads)),
+                          opt.normals_space == "camera" ? NormalSpace::Camera : NormalSpace::World, stem_path, png16, view);
         if (opt.mask) {  // 255 where the model covers at least half the pixel
             GrayImage<uint8_t> mask{color.width, color.height, std::vector<uint8_t>(color.pixels.size())};
             for (size_t p = 0; p < color.pixels.size(); ++p) mask.values[p] = color.pixels[p].a >= 128 ? 255 : 0;

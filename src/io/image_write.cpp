@@ -155,4 +155,21 @@ void write_gray(const GrayImage<float>& image, const std::filesystem::path& path
     write_exr(image.width, image.height, {{"Z", image.values.data()}}, 1, path);
 }
 
+void write_rgb(int width, int height, const std::vector<uint16_t>& rgb, const std::filesystem::path& path) {
+    if (picture_format(path) != PictureFormat::Png) throw std::runtime_error(path.string() + ": a 16-bit RGB picture is written as .png");
+    write_atomically(path, [&](const std::string& tmp) {
+        png_image png{};
+        png.version = PNG_IMAGE_VERSION;
+        png.width = png_uint_32(width);
+        png.height = png_uint_32(height);
+        png.format = PNG_FORMAT_LINEAR_RGB;  // 16-bit RGB, stored as given
+        if (!png_image_write_to_file(&png, tmp.c_str(), 0, rgb.data(), 0, nullptr)) throw std::runtime_error(path.string() + ": " + png.message);
+    });
+}
+
+void write_rgb(int width, int height, const std::vector<float>& rgb, const std::filesystem::path& path) {
+    if (picture_format(path) != PictureFormat::Exr) throw std::runtime_error(path.string() + ": a float RGB picture is written as .exr");
+    write_exr(width, height, {{"R", rgb.data()}, {"G", rgb.data() + 1}, {"B", rgb.data() + 2}}, 3, path);
+}
+
 }  // namespace softraster

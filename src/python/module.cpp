@@ -25,6 +25,8 @@
 #include "softraster/scene/model.h"
 #include "softraster/scene/scene.h"
 #include "softraster/scene/scene_renderer.h"
+#include "softraster/scene/surface_ids.h"
+#include "softraster/srgb.h"
 
 namespace py = pybind11;
 namespace fs = std::filesystem;
@@ -117,33 +119,78 @@ py::dict camera_of(const Scene& scene) {
     return d;
 }
 
+// What a call returns besides the color picture (each documented in help(softraster)).
+struct Outputs {
+    bool depth = false;
+    std::optional<NormalSpace> normals;
+    bool ids = false;
+    bool linear = false;
+    bool any() const { return depth || normals || ids || linear; }
+};
+Outputs outputs_of(bool depth, const std::optional<std::string>& normals, bool ids, bool linear) {
+    Outputs o{depth, std::nullopt, ids, linear};
+    if (normals) {
+        if (*normals != "world" && *normals != "camera") throw InputError("normals " + *normals + ": expected world or camera");
+        o.normals = *normals == "world" ? NormalSpace::World : NormalSpace::Camera;
+    }
+    return o;
+}
+
 struct Rendered {
     Image color;
     GrayImage<float> depth;
+    SurfaceIds ids;
+    std::vector<glm::vec3> normals;
 };
-// Draws the scene with the GIL released.
-Rendered draw(const Scene& scene, int threads, bool want_depth) {
+// Draws the scene (and its ids, for ids or normals) with the GIL released.
+Rendered draw(const Scene& scene, int threads, const Outputs& want) {
     py::gil_scoped_release unlocked;
     const SceneRenderer renderer(scene, threads_of(threads));
     Framebuffer fb = renderer.make_framebuffer();
     renderer.render(fb);
-    Rendered r{renderer.resolve(fb), {}};
-    if (want_depth) r.depth = depth_picture(fb);
+    Rendered r{renderer.resolve(fb), {}, {}, {}};
+    if (want.depth) r.depth = depth_picture(fb);
+    if (want.ids || want.normals) r.ids = surface_ids(scene, threads_of(threads));
+    if (want.normals) r.normals = surface_normals(scene, r.ids, *want.normals);
     return r;
 }
 
-py::dict outputs(const Scene& scene, const Rendered& r, bool depth) {
+py::dict outputs(const Scene& scene, const Rendered& r, const Outputs& want, ColorSpace color_space) {
     py::dict d;
     d["color"] = color_array(r.color);
-    if (depth) {
+    const ssize_t h = r.color.height, w = r.color.width;
+    if (want.depth) {
         if (r.depth.width != r.color.width)
             throw InputError("depth: not available for supersampled scenes");
-        py::array_t<float> z({r.depth.height, r.depth.width}), distance({r.depth.height, r.depth.width});
+        py::array_t<float> z({h, w}), distance({h, w});
         float* zp = z.mutable_data();
         float* dp = distance.mutable_data();
         for (size_t i = 0; i < r.depth.values.size(); ++i) zp[i] = r.depth.values[i], dp[i] = view_distance(r.depth.values[i], scene.camera);
         d["depth"] = distance;
         d["window_z"] = z;
+    }
+    if (want.normals) {
+        py::array_t<float> n({h, w, ssize_t(3)});
+        std::memcpy(n.mutable_data(), r.normals.data(), r.normals.size() * sizeof(glm::vec3));
+        d["normals"] = n;
+    }
+    if (want.ids) {
+        py::array_t<int32_t> object({h, w}), triangle({h, w});
+        std::memcpy(object.mutable_data(), r.ids.object.data(), r.ids.object.size() * sizeof(int32_t));
+        std::memcpy(triangle.mutable_data(), r.ids.triangle.data(), r.ids.triangle.size() * sizeof(int32_t));
+        d["object_id"] = object;
+        d["triangle_id"] = triangle;
+    }
+    if (want.linear) {  // the picture's values as linear light: decoded from sRGB, or c / 255
+        py::array_t<float> linear({h, w, ssize_t(4)});
+        float* out = linear.mutable_data();
+        for (size_t p = 0; p < r.color.pixels.size(); ++p) {
+            const Rgba8 c = r.color.pixels[p];
+            const uint8_t rgb[3] = {c.r, c.g, c.b};
+            for (size_t k = 0; k < 3; ++k) out[4 * p + k] = color_space == ColorSpace::Srgb ? srgb::decode(rgb[k]) : rgb[k] / 255.0f;
+            out[4 * p + 3] = c.a / 255.0f;
+        }
+        d["linear"] = linear;
     }
     d["camera"] = camera_of(scene);
     return d;
@@ -161,7 +208,9 @@ public:
     }
     py::dict render(const py::object& size, const std::string& view, int samples, const std::optional<std::string>& shading,
                     const std::optional<std::string>& background, const std::string& tone_mapping, float exposure, bool shadows,
-                    bool ssao, bool depth, int threads, const std::optional<std::array<float, 3>>& direction) const {
+                    bool ssao, bool depth, const std::optional<std::string>& normals, bool ids, bool linear, int threads,
+                    const std::optional<std::array<float, 3>>& direction) const {
+        const Outputs want = outputs_of(depth, normals, ids, linear);
         const cli::ModelOptions o = model_options(size, view, samples, shading, background,
                                                   color_ == ColorSpace::Linear ? "linear" : "srgb", tone_mapping, exposure, shadows, ssao);
         ModelPicture picture = o.picture(512);
@@ -171,7 +220,30 @@ public:
             picture.to_eye = d;
         }
         const Scene scene = model_scene(model_, picture);
-        return outputs(scene, draw(scene, threads, depth), depth);
+        return outputs(scene, draw(scene, threads, want), want, scene.color_space);
+    }
+    // Object i's triangles in world space (its node's transform applied), as drawn.
+    py::dict mesh(ssize_t i) const {
+        if (i < 0 || size_t(i) >= model_.objects.size())
+            throw py::index_error("object " + std::to_string(i) + ": the model has " + std::to_string(model_.objects.size()));
+        const SceneObject& o = model_.objects[size_t(i)];
+        const Mesh& mesh = *o.mesh;
+        const ssize_t v = ssize_t(mesh.vertices.size()), t = ssize_t(mesh.triangle_count());
+        py::array_t<float> positions({v, ssize_t(3)}), normals({v, ssize_t(3)});
+        py::array_t<uint32_t> triangles({t, ssize_t(3)});
+        const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(o.model)));
+        float* p = positions.mutable_data();
+        float* n = normals.mutable_data();
+        for (const MeshVertex& vertex : mesh.vertices) {
+            const glm::vec3 world = glm::vec3(o.model * glm::vec4(vertex.position, 1.0f));
+            const glm::vec3 nw = normal_matrix * vertex.normal;
+            const float len = glm::length(nw);
+            for (int k = 0; k < 3; ++k) *p++ = world[k], *n++ = len > 0.0f ? nw[k] / len : 0.0f;
+        }
+        std::memcpy(triangles.mutable_data(), mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+        py::dict d;
+        d["positions"] = positions, d["normals"] = normals, d["triangles"] = triangles;
+        return d;
     }
     std::vector<std::string> warnings() const { return model_.warnings; }
     size_t objects() const { return model_.objects.size(); }
@@ -199,13 +271,15 @@ PYBIND11_MODULE(_softraster, m) {
     });
     m.def(
         "render",
-        [](const py::object& scene, int threads, bool depth) -> py::object {
+        [](const py::object& scene, int threads, bool depth, const std::optional<std::string>& normals, bool ids, bool linear) -> py::object {
+            const Outputs want = outputs_of(depth, normals, ids, linear);
             const Scene s = scene_of(scene);
-            const Rendered r = draw(s, threads, depth);
-            if (!depth) return color_array(r.color);
-            return outputs(s, r, true);
+            const Rendered r = draw(s, threads, want);
+            if (!want.any()) return color_array(r.color);
+            return outputs(s, r, want, s.color_space);
         },
-        py::arg("scene"), py::kw_only(), py::arg("threads") = 0, py::arg("depth") = false);
+        py::arg("scene"), py::kw_only(), py::arg("threads") = 0, py::arg("depth") = false, py::arg("normals") = py::none(),
+        py::arg("ids") = false, py::arg("linear") = false);
     m.def(
         "render_model",
         [](const py::object& path, const py::object& size, const std::string& view, int samples, const std::optional<std::string>& shading,
@@ -213,7 +287,8 @@ PYBIND11_MODULE(_softraster, m) {
            bool shadows, bool ssao, int threads) -> py::object {
             const PyModel model(path, color_space);
             const py::dict out =
-                model.render(size, view, samples, shading, background, tone_mapping, exposure, shadows, ssao, false, threads, std::nullopt);
+                model.render(size, view, samples, shading, background, tone_mapping, exposure, shadows, ssao, false, std::nullopt, false, false,
+                             threads, std::nullopt);
             return out["color"];  // (a py::object: an accessor into the dict would outlive it)
         },
         py::arg("path"), py::kw_only(), py::arg("size") = 512, py::arg("view") = "three-quarter", py::arg("samples") = 4,
@@ -227,11 +302,18 @@ PYBIND11_MODULE(_softraster, m) {
         .def("render", &PyModel::render, py::kw_only(), py::arg("size") = 512, py::arg("view") = "three-quarter", py::arg("samples") = 4,
              py::arg("shading") = py::none(), py::arg("background") = py::none(), py::arg("tone_mapping") = "none",
              py::arg("exposure") = 1.0f, py::arg("shadows") = false, py::arg("ssao") = false, py::arg("depth") = false,
-             py::arg("threads") = 0, py::arg("direction") = py::none(),
+             py::arg("normals") = py::none(), py::arg("ids") = false, py::arg("linear") = false, py::arg("threads") = 0,
+             py::arg("direction") = py::none(),
              "Draws the model, framed from `view` (or from `direction`, a vector from the model's center toward the camera), with the options of softraster.render_model.\n"
              "Returns a dict: 'color' (H x W x 4 uint8), 'camera' (K, world_to_camera in OpenCV's convention,\n"
              "world_to_camera_gl in OpenGL's), and with depth=True 'depth' (H x W float32 view-axis distance,\n"
-             "inf where empty) and 'window_z'. See help(softraster) for the conventions.")
+             "inf where empty) and 'window_z'; normals='world' or 'camera': 'normals' (H x W x 3 float32, unit, 0 where\n"
+             "empty); ids=True: 'object_id' and 'triangle_id' (H x W int32, -1 where empty); linear=True: 'linear'\n"
+             "(H x W x 4 float32 linear light). See help(softraster) for the conventions.")
+        .def("mesh", &PyModel::mesh, py::arg("object"),
+             "Object `object`'s mesh in world space, as drawn: a dict of 'positions' (V x 3 float32, its node's transform\n"
+             "applied), 'normals' (V x 3 float32, unit) and 'triangles' (T x 3 uint32, indices into them). Its triangle\n"
+             "numbers are render(ids=True)'s 'triangle_id'.")
         .def_property_readonly("warnings", &PyModel::warnings, "What could not be used (a texture out of reach: drawn untextured)")
         .def_property_readonly("objects", &PyModel::objects, "How many objects (a mesh placed by a node) the model has")
         .def_property_readonly("path", &PyModel::path);

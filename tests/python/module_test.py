@@ -72,6 +72,47 @@ for view in ['left', 'top']:
           and r['depth'].shape == (40, 40) and np.isfinite(r['depth']).any() and r['camera']['K'].shape == (3, 3))
 check('Model.objects', model.objects >= 1 and model.path == DUCK)
 
+# The data-set outputs of one view of the duck, checked against its own mesh: each drawn
+# pixel's depth, back-projected through K and world_to_camera, lies on the triangle that
+# triangle_id names, within one pixel's footprint (depth / f); the normals are that
+# triangle's, unit length, and agree with the 8-bit normals shading; the linear color is the
+# sRGB picture decoded.
+shot = model.render(size=96, view='iso', samples=1, depth=True, normals='world', ids=True, linear=True)
+mesh = model.mesh(0)
+oid, tid, d, K = shot['object_id'], shot['triangle_id'], shot['depth'], shot['camera']['K']
+v, u = np.nonzero(oid >= 0)
+check('ids cover the depth', len(u) > 1000 and np.isfinite(d[v, u]).all() and np.isinf(d[oid < 0]).mean() > 0.99, len(u))
+check('object ids', set(np.unique(oid)) <= set([-1] + list(range(model.objects))) and (tid[oid < 0] == -1).all())
+rays = np.linalg.inv(K) @ np.stack([u + 0.5, v + 0.5, np.ones(len(u))])
+points = (np.linalg.inv(shot['camera']['world_to_camera']) @ np.vstack([rays * d[v, u], np.ones(len(u))]))[:3].T
+obj0 = oid[v, u] == 0
+tri = mesh['positions'][mesh['triangles'][tid[v, u][obj0]]].astype(np.float64)  # (n, 3 corners, xyz)
+face = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+face /= np.linalg.norm(face, axis=1)[:, None]
+off_plane = np.abs(np.einsum('ij,ij->i', points[obj0] - tri[:, 0], face))
+footprint = d[v, u][obj0] / K[0, 0]
+check('back-projected points on their triangles', (off_plane <= footprint).all(), (off_plane / footprint).max())
+n = shot['normals']
+check('normals unit where drawn, 0 elsewhere', np.allclose(np.linalg.norm(n[v, u], axis=1), 1, atol=1e-5) and not n[oid < 0].any())
+corner_normals = mesh['normals'][mesh['triangles'][tid[v, u][obj0]]]
+check('normals within their corners\' cone', (np.einsum('ij,ikj->ik', n[v, u][obj0], corner_normals).max(axis=1) > 0.5).all())
+linear_model = softraster.Model(DUCK, color_space='linear')  # (the normals shading's 0.5 n + 0.5 stored as is)
+shaded = linear_model.render(size=96, view='iso', samples=1, shading='normals')['color'][v, u, :3] / 255.0 * 2 - 1
+check('normals agree with the normals shading', np.abs(shaded - n[v, u]).max() < 0.02, np.abs(shaded - n[v, u]).max())
+cam = shot['camera']['world_to_camera'][:3, :3]
+in_camera = model.render(size=96, view='iso', samples=1, normals='camera')['normals']
+check('camera-space normals', np.allclose(in_camera[v, u], n[v, u] @ cam.T, atol=1e-5))
+srgb = shot['color'][..., :3] / 255.0
+check('linear color', np.allclose(shot['linear'][..., :3], np.where(srgb <= 0.04045, srgb / 12.92, ((srgb + 0.055) / 1.055) ** 2.4), atol=1e-6)
+      and np.allclose(shot['linear'][..., 3], shot['color'][..., 3] / 255.0))
+# Two objects in a scene: each pixel's object id is the one its color says.
+two = dict(scene, objects=[dict(scene['objects'][0], transform={"translate": [x, 0, -5], "rotate": [90, 0, 0], "scale": [0.5, 0.5, 0.5]},
+                                material={"shading": "unlit", "color": c}) for x, c in [(-1, [1, 0, 0, 1]), (1, [0, 1, 0, 1])]])
+r = softraster.render(two, ids=True)
+red, green = r['color'][..., 0] > 128, r['color'][..., 1] > 128
+check('object ids of a scene', red.any() and green.any() and (r['object_id'][red] == 0).all() and (r['object_id'][green] == 1).all()
+      and (r['object_id'][~(red | green)] == -1).all() and set(np.unique(r['triangle_id'][red])) <= {0, 1})
+
 # Many views, as `softraster views` draws them: the same pictures and cameras.
 out = os.path.join(work, 'views')
 subprocess.run([exe, 'views', DUCK, '--out', out, '--count', '3', '--size', '40', '--layout', 'ring'], check=True, capture_output=True)
@@ -94,7 +135,9 @@ for call, kind, text in [(lambda: softraster.render({"version": 3}), ValueError,
                          (lambda: softraster.render_model(DUCK, size=0), ValueError, 'size'),
                          (lambda: softraster.Model(path), ValueError, 'plane.json'),
                          (lambda: softraster.view_directions(3, layout='cube'), ValueError, 'cube'),
-                         (lambda: model.render(direction=(0, 0, 0)), ValueError, 'direction')]:
+                         (lambda: model.render(direction=(0, 0, 0)), ValueError, 'direction'),
+                         (lambda: model.render(normals='object'), ValueError, 'normals'),
+                         (lambda: model.mesh(model.objects), IndexError, 'object')]:
     try:
         call()
         failures.append('no %s for %s' % (kind.__name__, text))

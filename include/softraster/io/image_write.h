@@ -1,6 +1,6 @@
 // Writing pictures in the format the file name's extension names, each through a well-kept
 // library (none of these encoders is written here):
-//   .png  8-bit RGBA color, 8-bit gray (stb_image_write), 16-bit gray (libpng)
+//   .png  8-bit RGBA color, 8-bit gray (stb_image_write), 16-bit gray and RGB (libpng)
 //   .tga  8-bit RGBA (stb_image_write)
 //   .ppm  8-bit RGB, alpha dropped (libnetpbm)
 //   .exr  32-bit float channels (OpenEXR), linear: color as c / 255 (an sRGB picture's r, g, b
@@ -32,5 +32,8 @@ void write_gray(const GrayImage<uint8_t>& image, const std::filesystem::path& pa
 void write_gray(const GrayImage<uint16_t>& image, const std::filesystem::path& path);
 // 32-bit float, one channel named Z: EXR.
 void write_gray(const GrayImage<float>& image, const std::filesystem::path& path);
+// Three channels per pixel, row by row: 16-bit RGB PNG, or 32-bit float EXR (R, G, B).
+void write_rgb(int width, int height, const std::vector<uint16_t>& rgb, const std::filesystem::path& path);
+void write_rgb(int width, int height, const std::vector<float>& rgb, const std::filesystem::path& path);
 
 }  // namespace softraster
