@@ -70,9 +70,12 @@ set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
 set(CPACK_COMPONENT_PYTHON_DESCRIPTION "3D rasterizer on the CPU - Python module
 softraster is a 3D rasterizer that runs the whole graphics pipeline on
 the CPU. This package has its Python module: scene and model files drawn
-into NumPy arrays (color, depth, cameras), with no GPU and no display.")
+into NumPy arrays (color, depth, normals, ids, cameras), with no GPU and
+no display; softraster.dask draws folders of model files on a Dask cluster.")
 set(CPACK_COMPONENT_PYTHON_DEPENDS lib)
 set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS "python3 (>= 3.11), python3 (<< 3.12), python3-numpy")
+# softraster.dask needs Dask and runs the program; the rest of the module needs neither.
+set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "python3-distributed, softraster")
 
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME libsoftraster-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)

@@ -17,8 +17,9 @@ if [ "${1:-}" = "--tests" ]; then
   # Xvfb and xdotool run the viewer's window and type into it; xwd (x11-apps) reads it back.
   # ccache: test.sh builds two trees; it keeps their compiled files for the next run.
   # bubblewrap runs the thumbnailer in GNOME's sandbox; lintian checks the .deb packages.
+  # python3-distributed: Dask, whose LocalCluster runs softraster.dask's test.
   pkgs+=(libgtest-dev libbenchmark-dev libosmesa6-dev assimp-testmodels ffmpeg tmux xvfb xauth xdotool x11-apps ccache
-         bubblewrap lintian)
+         bubblewrap lintian python3-distributed)
 fi
 missing=()
 for p in "${pkgs[@]}"; do
