@@ -42,9 +42,9 @@ on).
 The GIL is released while a picture is drawn: N Python threads drawing N pictures use N
 cores. Each call draws with `threads` worker threads (0: one per core).
 """
-from ._softraster import Model, __version__, render as _render, render_model as _render_model, view_directions
+from ._softraster import Model, __version__, render as _render, render_model as _render_model, view_directions, write_png
 
-__all__ = ["render", "render_model", "Model", "views", "view_directions", "__version__"]
+__all__ = ["render", "render_model", "Model", "views", "view_directions", "write_png", "__version__"]
 
 
 def render(scene, *, threads=0, depth=False, normals=None, ids=False, linear=False):

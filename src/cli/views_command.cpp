@@ -70,14 +70,14 @@ void write_normals(const Scene& scene, const SurfaceIds& ids, NormalSpace space,
 }  // namespace
 
 int run_views(const ViewsOptions& opt) {
-    std::error_code ec;
-    fs::create_directories(opt.out, ec);
-    if (ec) throw InputError(opt.out + ": cannot create the folder (" + ec.message() + ")");
     ModelOptions options = opt.model;
     if (options.background.empty()) options.background = "0,0,0,0";  // (transparent: the mask is the alpha)
     ModelPicture picture = options.picture(512);
     const Model model = load_model(opt.input, MissingTexture::Warn, picture.color_space);
     for (const std::string& w : model.warnings) std::fprintf(stderr, "softraster: warning: %s\n", w.c_str());
+    std::error_code ec;  // (after the model is read: a bad file leaves nothing behind)
+    fs::create_directories(opt.out, ec);
+    if (ec) throw InputError(opt.out + ": cannot create the folder (" + ec.message() + ")");
     const BoundingSphere sphere = bounding_sphere(model.objects).value_or(BoundingSphere{});
 
     json cameras = {{"model", opt.input}, {"width", picture.width}, {"height", picture.height}, {"layout", opt.layout},

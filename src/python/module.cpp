@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -21,6 +22,7 @@
 
 #include "cli/model_options.h"
 #include "softraster/error.h"
+#include "softraster/io/image_io.h"
 #include "softraster/pipeline/resolve.h"
 #include "softraster/scene/model.h"
 #include "softraster/scene/scene.h"
@@ -141,10 +143,12 @@ struct Rendered {
     GrayImage<float> depth;
     SurfaceIds ids;
     std::vector<glm::vec3> normals;
+    double ms = 0.0;  // drawing it: the renderer's setup, the frame, the resolve and the extra outputs
 };
 // Draws the scene (and its ids, for ids or normals) with the GIL released.
 Rendered draw(const Scene& scene, int threads, const Outputs& want) {
     py::gil_scoped_release unlocked;
+    const auto start = std::chrono::steady_clock::now();
     const SceneRenderer renderer(scene, threads_of(threads));
     Framebuffer fb = renderer.make_framebuffer();
     renderer.render(fb);
@@ -152,6 +156,7 @@ Rendered draw(const Scene& scene, int threads, const Outputs& want) {
     if (want.depth) r.depth = depth_picture(fb);
     if (want.ids || want.normals) r.ids = surface_ids(scene, threads_of(threads));
     if (want.normals) r.normals = surface_normals(scene, r.ids, *want.normals);
+    r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return r;
 }
 
@@ -193,6 +198,7 @@ py::dict outputs(const Scene& scene, const Rendered& r, const Outputs& want, Col
         d["linear"] = linear;
     }
     d["camera"] = camera_of(scene);
+    d["draw_ms"] = r.ms;
     return d;
 }
 
@@ -309,7 +315,8 @@ PYBIND11_MODULE(_softraster, m) {
              "world_to_camera_gl in OpenGL's), and with depth=True 'depth' (H x W float32 view-axis distance,\n"
              "inf where empty) and 'window_z'; normals='world' or 'camera': 'normals' (H x W x 3 float32, unit, 0 where\n"
              "empty); ids=True: 'object_id' and 'triangle_id' (H x W int32, -1 where empty); linear=True: 'linear'\n"
-             "(H x W x 4 float32 linear light). See help(softraster) for the conventions.")
+             "(H x W x 4 float32 linear light); 'draw_ms', the milliseconds spent drawing (without the\n"
+             "conversion to arrays). See help(softraster) for the conventions.")
         .def("mesh", &PyModel::mesh, py::arg("object"),
              "Object `object`'s mesh in world space, as drawn: a dict of 'positions' (V x 3 float32, its node's transform\n"
              "applied), 'normals' (V x 3 float32, unit) and 'triangles' (T x 3 uint32, indices into them). Its triangle\n"
@@ -327,5 +334,18 @@ PYBIND11_MODULE(_softraster, m) {
         py::arg("count"), py::kw_only(), py::arg("layout") = "sphere", py::arg("seed") = 0,
         "The camera directions of `softraster views` (unit vectors from the model's center, +y up): 'sphere' (evenly spread),\n"
         "'ring' (20 degrees above the horizon) or 'random' (uniform, the same for a seed). Use with Model.render(direction=...).");
+    m.def(
+        "write_png",
+        [](const py::object& path, const py::array_t<uint8_t, py::array::c_style | py::array::forcecast>& rgba) {
+            if (rgba.ndim() != 3 || rgba.shape(2) != 4 || rgba.shape(0) < 1 || rgba.shape(1) < 1)
+                throw InputError("write_png: expected an H x W x 4 uint8 array");
+            Image image(int(rgba.shape(1)), int(rgba.shape(0)));
+            std::memcpy(image.pixels.data(), rgba.data(), image.pixels.size() * sizeof(Rgba8));
+            const std::string file = py::module_::import("os").attr("fspath")(path).cast<std::string>();
+            py::gil_scoped_release unlocked;
+            write_png(image, file);
+        },
+        py::arg("path"), py::arg("rgba"),
+        "Writes an H x W x 4 uint8 picture (render's color) as a PNG file, whole or not at all (a temporary name, then renamed).");
     m.attr("__version__") = SOFTRASTER_VERSION;
 }

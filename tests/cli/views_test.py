@@ -123,6 +123,8 @@ check('ring', len({round(v['to_eye'][1], 6) for v in ring['views']}) == 1)
 # Bad input: one line, exit 2.
 r = subprocess.run([exe, 'views', os.path.join(work, 'missing.glb'), '--out', os.path.join(work, 'x')], capture_output=True, text=True)
 check('missing model', r.returncode == 2 and 'missing.glb' in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr)
+r = subprocess.run([exe, 'views', os.path.join(corpus, 'invalid', 'empty.obj'), '--out', os.path.join(work, 'bad', 'x')], capture_output=True, text=True)
+check('bad model: exit 2, no folder', r.returncode == 2 and 'empty.obj' in r.stderr and not os.path.exists(os.path.join(work, 'bad')), r.stderr)
 
 for f in failures:
     print('FAIL:', f)

@@ -73,6 +73,19 @@ def main(exe, python_dir, corpus, work):
         again = render_files(files, out, client=client, batch=16, size=64, program=exe)
         check('a second run skips every picture', again['summary']['ok'] == 0 and again['summary']['skipped'] == s['ok'], again['summary'])
 
+        # Views: a folder per model, its cameras.json last; a bad file fails alone.
+        out = os.path.join(work, 'views')
+        some = [os.path.join(corpus, 'Collada', 'duck.dae'), os.path.join(corpus, 'invalid', 'empty.obj'), os.path.join(corpus, 'OBJ', 'spider.obj')]
+        report = render_files(some, out, client=client, batch=2, size=32, views=2, options=['--depth'], program=exe)
+        status = {os.path.basename(e['input']): e for e in report['inputs']}
+        check('views', [status[n]['status'] for n in ('duck.dae', 'empty.obj', 'spider.obj')] == ['ok', 'failed', 'ok']
+              and 'too small' in status['empty.obj']['reason']
+              and len(json.load(open(os.path.join(status['duck.dae']['output'], 'cameras.json')))['views']) == 2
+              and os.path.exists(os.path.join(status['spider.obj']['output'], '001_depth.exr'))
+              and not os.path.exists(os.path.join(out, 'invalid')), report['inputs'])
+        again = render_files(some, out, client=client, batch=2, size=32, views=2, options=['--depth'], program=exe)
+        check('views skipped', again['summary']['skipped'] == 2 and again['summary']['failed'] == 1, again['summary'])
+
         # One worker killed partway (its process, with SIGKILL: as a machine lost). The nanny
         # starts another; the lost batches run again and skip what was already written.
         out = os.path.join(work, 'killed')

@@ -113,6 +113,26 @@ red, green = r['color'][..., 0] > 128, r['color'][..., 1] > 128
 check('object ids of a scene', red.any() and green.any() and (r['object_id'][red] == 0).all() and (r['object_id'][green] == 1).all()
       and (r['object_id'][~(red | green)] == -1).all() and set(np.unique(r['triangle_id'][red])) <= {0, 1})
 
+# docs/python.md's example (examples/point_cloud.py), end to end: every point it makes lies on
+# the triangle its ids name, within one pixel's footprint at that distance.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'examples'))
+from point_cloud import point_cloud  # noqa: E402
+points, colors, ids = point_cloud(DUCK, views=4, size=64)
+meshes = [model.mesh(i) for i in range(model.objects)]
+tri = np.stack([meshes[o]['positions'][meshes[o]['triangles'][t]] for o, t in ids]).astype(np.float64)
+face = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+face /= np.linalg.norm(face, axis=1)[:, None]
+distance = np.abs(np.einsum('ij,ij->i', points - tri[:, 0], face))
+radius = np.linalg.norm(meshes[0]['positions'] - meshes[0]['positions'].mean(axis=0), axis=1).max()
+check('point cloud example', len(points) > 4 * 500 and colors.dtype == np.uint8 and (distance <= 0.05 * radius).all()
+      and np.median(distance) < 0.002 * radius, (len(points), distance.max() / radius))
+
+# write_png: the picture back as read_png reads it.
+png_path = os.path.join(work, 'written.png')
+softraster.write_png(png_path, shot['color'])
+w, h, ch, pixels = read_png(png_path)
+check('write_png', (w, h, ch) == (96, 96, 4) and np.array_equal(np.frombuffer(bytes(pixels), np.uint8).reshape(h, w, 4), shot['color']))
+
 # Many views, as `softraster views` draws them: the same pictures and cameras.
 out = os.path.join(work, 'views')
 subprocess.run([exe, 'views', DUCK, '--out', out, '--count', '3', '--size', '40', '--layout', 'ring'], check=True, capture_output=True)
@@ -137,7 +157,8 @@ for call, kind, text in [(lambda: softraster.render({"version": 3}), ValueError,
                          (lambda: softraster.view_directions(3, layout='cube'), ValueError, 'cube'),
                          (lambda: model.render(direction=(0, 0, 0)), ValueError, 'direction'),
                          (lambda: model.render(normals='object'), ValueError, 'normals'),
-                         (lambda: model.mesh(model.objects), IndexError, 'object')]:
+                         (lambda: model.mesh(model.objects), IndexError, 'object'),
+                         (lambda: softraster.write_png(png_path, np.zeros((4, 4, 3), np.uint8)), ValueError, 'H x W x 4')]:
     try:
         call()
         failures.append('no %s for %s' % (kind.__name__, text))
