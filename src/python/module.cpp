@@ -36,7 +36,10 @@ namespace fs = std::filesystem;
 namespace softraster::python {
 namespace {
 
-unsigned threads_of(int threads) { return threads > 0 ? unsigned(threads) : std::max(1u, std::thread::hardware_concurrency()); }
+unsigned threads_of(int threads) {
+    if (threads < 0) throw InputError("threads " + std::to_string(threads) + ": expected 0 (one per core) or more");
+    return threads > 0 ? unsigned(threads) : std::max(1u, std::thread::hardware_concurrency());
+}
 
 py::array_t<uint8_t> color_array(const Image& image) {
     py::array_t<uint8_t> out({image.height, image.width, 4});
@@ -77,7 +80,12 @@ cli::ModelOptions model_options(const py::object& size, const std::string& view,
     if (py::isinstance<py::int_>(size)) {
         o.size = std::to_string(size.cast<int>());
     } else {
-        const auto wh = size.cast<std::pair<int, int>>();
+        std::pair<int, int> wh;
+        try {
+            wh = size.cast<std::pair<int, int>>();
+        } catch (const py::cast_error&) {
+            throw InputError("size " + py::repr(size).cast<std::string>() + ": expected N or (width, height)");
+        }
         o.size = std::to_string(wh.first) + "x" + std::to_string(wh.second);
     }
     auto one_of = [](const std::string& what, const std::string& value, std::initializer_list<const char*> allowed) {
@@ -327,6 +335,7 @@ PYBIND11_MODULE(_softraster, m) {
     m.def(
         "view_directions",
         [](int count, const std::string& layout, unsigned seed) {
+            if (count < 1) throw InputError("count " + std::to_string(count) + ": expected at least 1");
             std::vector<std::array<float, 3>> out;
             for (const glm::vec3& d : view_directions(layout, count, seed)) out.push_back({d.x, d.y, d.z});
             return out;
@@ -343,7 +352,13 @@ PYBIND11_MODULE(_softraster, m) {
             std::memcpy(image.pixels.data(), rgba.data(), image.pixels.size() * sizeof(Rgba8));
             const std::string file = py::module_::import("os").attr("fspath")(path).cast<std::string>();
             py::gil_scoped_release unlocked;
-            write_png(image, file);
+            try {
+                write_png(image, file);
+            } catch (const std::runtime_error& e) {
+                py::gil_scoped_acquire locked;
+                PyErr_SetString(PyExc_OSError, e.what());
+                throw py::error_already_set();
+            }
         },
         py::arg("path"), py::arg("rgba"),
         "Writes an H x W x 4 uint8 picture (render's color) as a PNG file, whole or not at all (a temporary name, then renamed).");

@@ -158,7 +158,11 @@ for call, kind, text in [(lambda: softraster.render({"version": 3}), ValueError,
                          (lambda: model.render(direction=(0, 0, 0)), ValueError, 'direction'),
                          (lambda: model.render(normals='object'), ValueError, 'normals'),
                          (lambda: model.mesh(model.objects), IndexError, 'object'),
-                         (lambda: softraster.write_png(png_path, np.zeros((4, 4, 3), np.uint8)), ValueError, 'H x W x 4')]:
+                         (lambda: softraster.write_png(png_path, np.zeros((4, 4, 3), np.uint8)), ValueError, 'H x W x 4'),
+                         (lambda: softraster.write_png(os.path.join(work, 'no', 'x.png'), shot['color']), OSError, 'x.png'),
+                         (lambda: softraster.views(model, count=0), ValueError, 'count'),
+                         (lambda: model.render(size=(10,)), ValueError, 'size'),
+                         (lambda: model.render(threads=-1), ValueError, 'threads')]:
     try:
         call()
         failures.append('no %s for %s' % (kind.__name__, text))
