@@ -57,12 +57,18 @@ public:
         count_ = 0;
     }
 
-    // Queues the lanes of `pass` out of eight fragments: window depths z, varyings (already
-    // divided by w), index of each pixel's first sample and the samples it writes.
-    void push(simd::i8 pass, simd::f8 z, const std::array<simd::f8, N>& var, simd::i8 pixel, simd::i8 samples,
-              bool front_facing) {
+    // The facing of the triangle whose fragments come next. The shader sees one facing per
+    // call: a change of facing flushes. (Once per triangle, not per push.)
+    void begin_triangle(bool front_facing) {
+        if (front_facing != front_facing_ && count_ > 0) flush();
+        front_facing_ = front_facing;
+    }
+
+    // Queues the lanes of `pass` out of eight fragments of the triangle begun last: window
+    // depths z, varyings (already divided by w), index of each pixel's first sample and the
+    // samples it writes.
+    void push(simd::i8 pass, simd::f8 z, const std::array<simd::f8, N>& var, simd::i8 pixel, simd::i8 samples) {
         using namespace simd;
-        begin(front_facing);
         const unsigned m = bits(pass);
         i8 lanes;
         std::memcpy(&lanes, detail::kCompressLanes[m].data(), sizeof lanes);
@@ -78,9 +84,8 @@ public:
         if (count_ >= kCapacity) drain();
     }
 
-    // Queues one fragment.
-    void push(float z, const std::array<float, N>& var, int32_t pixel, unsigned samples, bool front_facing) {
-        begin(front_facing);
+    // Queues one fragment of the triangle begun last.
+    void push(float z, const std::array<float, N>& var, int32_t pixel, unsigned samples) {
         z_[size_t(count_)] = z;
         for (size_t k = 0; k < size_t(N); ++k) var_[k][size_t(count_)] = var[k];
         pixel_[size_t(count_)] = pixel;
@@ -98,12 +103,6 @@ private:
     static constexpr int kCapacity = 8 * simd::kLanes;
     static_assert(kCapacity / simd::kLanes <= FragmentGroups<N>::kCapacity, "one call shades a full queue");
     static constexpr size_t kSlots = size_t(kCapacity + simd::kLanes);
-
-    // The shader sees one facing per call: a change of facing flushes.
-    void begin(bool front_facing) {
-        if (front_facing != front_facing_ && count_ > 0) flush();
-        front_facing_ = front_facing;
-    }
 
     // Shades the full groups of eight and moves what is left (fewer than eight) to the front.
     void drain() {

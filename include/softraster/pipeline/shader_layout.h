@@ -93,7 +93,12 @@ struct LayoutShader {
 namespace fragment_code {
 template <class S, int N>
 inline void groups(const S& shader, FragmentGroups<N>& b) {
-    for (int g = 0; g < b.count; ++g) shader.fragment_batch(b.varyings[g], b.z[g], b.front_facing, b.rgba[g]);
+    if constexpr (requires { shader.batch_constants(); }) {  // what every group uses, read once
+        const auto k = shader.batch_constants();
+        for (int g = 0; g < b.count; ++g) shader.fragment_batch(k, b.varyings[g], b.z[g], b.front_facing, b.rgba[g]);
+    } else {
+        for (int g = 0; g < b.count; ++g) shader.fragment_batch(b.varyings[g], b.z[g], b.front_facing, b.rgba[g]);
+    }
 }
 // Pairs side by side (x eight apart) go four groups at a time where the shader takes four
 // (QuadBlockShader), else each pair alone.

@@ -333,6 +333,7 @@ struct TileBackEnd {
         using namespace simd;
         const int width = fb.width();
         uint64_t queued = 0;
+        queue.begin_triangle(t.front_facing);
         // The triangle may come with its coverage only: its planes are made at its first
         // covered group, so a triangle that covers no sample costs only its edge functions.
         auto need_planes = [&] {
@@ -343,7 +344,7 @@ struct TileBackEnd {
             const f8 i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
             queued += unsigned(__builtin_popcount(bits(pass)));
             const i8 pixel = (splat_i(int32_t(fb.sample_index(0, y))) + (kLaneIndex + x) * Samples);
-            queue.push(pass, interpolate_depth(t, i, j), interpolate_varyings<L>(t, i, j), pixel, samples, t.front_facing);
+            queue.push(pass, interpolate_depth(t, i, j), interpolate_varyings<L>(t, i, j), pixel, samples);
         };
         if constexpr (Samples == 1) {
             auto test = [&](int y, int x, i8 covered) {
@@ -390,7 +391,7 @@ struct TileBackEnd {
                 if (!pass) return;
                 const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
                 ++queued;
-                queue.push(interpolate_depth(t, i, j), interpolate_varyings<L>(t, i, j), int32_t(base), pass, t.front_facing);
+                queue.push(interpolate_depth(t, i, j), interpolate_varyings<L>(t, i, j), int32_t(base), pass);
             });
         }
         return queued;

@@ -174,13 +174,23 @@ inline void light_color(const LightSet& lights, int i, const LightVisibility<sim
     out = {c.x * v, c.y * v, c.z * v};
 }
 
-inline simd::vec3x8 diffuse_intensity(const LightSet& lights, const simd::vec3x8& n, const LightVisibility<simd::f8>& vis) {
+// (ambient: lights.ambient in eight lanes, broadcast once by the caller for many groups.
+// Shadowed: whether a light's c_i carries its visibility; a shader without the position P
+// looks no shadow up, its visibilities are all 1 and the products are left out.)
+template <bool Shadowed = true>
+inline simd::vec3x8 diffuse_intensity(const LightSet& lights, const simd::vec3x8& n, const LightVisibility<simd::f8>& vis,
+                                      const simd::vec3x8& ambient) {
     using simd::splat;
-    simd::vec3x8 sum{splat(lights.ambient.x), splat(lights.ambient.y), splat(lights.ambient.z)};
+    simd::vec3x8 sum = ambient;
     for (int i = 0; i < lights.count; ++i) {
         const glm::vec3& l = lights.to_light[size_t(i)];
         simd::vec3x8 c;
-        light_color(lights, i, vis, c);
+        if constexpr (Shadowed) {
+            light_color(lights, i, vis, c);
+        } else {
+            const glm::vec3& color = lights.color[size_t(i)];
+            c = {splat(color.x), splat(color.y), splat(color.z)};
+        }
         const simd::f8 nl = simd::max(splat(0.0f), n.x * l.x + n.y * l.y + n.z * l.z);
         sum.x += c.x * nl;
         sum.y += c.y * nl;

@@ -249,16 +249,34 @@ struct SurfaceShader {
         return {rgb.x + emissive.x, rgb.y + emissive.y, rgb.z + emissive.z};
     }
 
+    // The uniforms the batch formulas use for every group, in eight lanes: broadcast once per
+    // call that shades many groups (shader_layout.h, the queue's flush) rather than per group.
+    struct BatchConstants {
+        std::array<simd::f8, 4> color;
+        simd::vec3x8 ambient;
+        bool tone_mapped;
+    };
+    BatchConstants batch_constants() const {
+        using simd::splat;
+        return {{splat(u->color.r), splat(u->color.g), splat(u->color.b), splat(u->color.a)},
+                {splat(u->lights.ambient.x), splat(u->lights.ambient.y), splat(u->lights.ambient.z)},
+                u->tone_mapping.active()};
+    }
+
     // The same formulas for eight fragments of a row (fragment_shading.h) ...
-    void fragment_batch(const std::array<simd::f8, kVaryingCount<Varyings>>& in, simd::f8 z, bool,
+    void fragment_batch(const std::array<simd::f8, kVaryingCount<Varyings>>& in, simd::f8 z, bool front_facing,
+                        std::array<simd::f8, 4>& out) const {
+        fragment_batch(batch_constants(), in, z, front_facing, out);
+    }
+    void fragment_batch(const BatchConstants& k, const std::array<simd::f8, kVaryingCount<Varyings>>& in, simd::f8 z, bool,
                         std::array<simd::f8, 4>& out) const {
         if constexpr (Varyings::kUv) {
             std::array<simd::f8, 4> tex;
             const bool textured = Model != Shading::Pbr || u->texture;
             if (textured) u->texture->sample8(in[Varyings::kUvAt], in[Varyings::kUvAt + 1], uv_derivatives(in), u->sampler, tex);
-            shade_batch(in, z, textured ? &tex : nullptr, out);
+            shade_batch(k, in, z, textured ? &tex : nullptr, out);
         } else {
-            shade_batch(in, z, nullptr, out);
+            shade_batch(k, in, z, nullptr, out);
         }
     }
     // ... and for the two rows of a row of 2x2 quads (fragment_shading.h), whose texture
@@ -271,8 +289,9 @@ struct SurfaceShader {
         if (textured)
             u->texture->sample_quad_rows(in0[Varyings::kUvAt], in0[Varyings::kUvAt + 1], in1[Varyings::kUvAt], in1[Varyings::kUvAt + 1],
                                          uv_derivatives(in0), uv_derivatives(in1), u->sampler, tex0, tex1);
-        shade_batch(in0, z0, textured ? &tex0 : nullptr, out0);
-        shade_batch(in1, z1, textured ? &tex1 : nullptr, out1);
+        const BatchConstants k = batch_constants();
+        shade_batch(k, in0, z0, textured ? &tex0 : nullptr, out0);
+        shade_batch(k, in1, z1, textured ? &tex1 : nullptr, out1);
     }
 
     // ... and for two such pairs side by side (fragment_shading.h), whose lookups go together
@@ -286,7 +305,8 @@ struct SurfaceShader {
         const simd::f8 vv[4] = {in[0][Varyings::kUvAt + 1], in[1][Varyings::kUvAt + 1], in[2][Varyings::kUvAt + 1], in[3][Varyings::kUvAt + 1]};
         const std::array<simd::f8, 4> d[4] = {uv_derivatives(in[0]), uv_derivatives(in[1]), uv_derivatives(in[2]), uv_derivatives(in[3])};
         u->texture->sample_quad_block(uu, vv, d, u->sampler, tex);
-        for (size_t g = 0; g < 4; ++g) shade_batch(in[g], z[g], &tex[g], out[g]);
+        const BatchConstants k = batch_constants();
+        for (size_t g = 0; g < 4; ++g) shade_batch(k, in[g], z[g], &tex[g], out[g]);
     }
 
 private:
@@ -295,17 +315,18 @@ private:
         return {in[d], in[d + 1], in[d + 2], in[d + 3]};
     }
     // The formulas with the base color texture's value `tex` looked up (null: none).
-    void shade_batch(const Batch& in, simd::f8 z, const std::array<simd::f8, 4>* tex, std::array<simd::f8, 4>& out) const {
+    void shade_batch(const BatchConstants& k, const Batch& in, simd::f8 z, const std::array<simd::f8, 4>* tex,
+                     std::array<simd::f8, 4>& out) const {
         using namespace simd;
         static_assert(kVaryingCount<Varyings> == Varyings::kFloats, "varying layout");
-        auto vec3_at = [&](int k) { return vec3x8{in[size_t(k)], in[size_t(k) + 1], in[size_t(k) + 2]}; };
+        auto vec3_at = [&](int at) { return vec3x8{in[size_t(at)], in[size_t(at) + 1], in[size_t(at) + 2]}; };
         if constexpr (Model == Shading::Depth) {
             out = {z, z, z, splat(1.0f)};
         } else if constexpr (Model == Shading::Normals) {
             const vec3x8 n = normalize(vec3_at(Varyings::kNormalAt));
             out = {0.5f * n.x + 0.5f, 0.5f * n.y + 0.5f, 0.5f * n.z + 0.5f, splat(1.0f)};
         } else {
-            std::array<f8, 4> base = {splat(u->color.r), splat(u->color.g), splat(u->color.b), splat(u->color.a)};
+            std::array<f8, 4> base = k.color;
             if constexpr (Varyings::kColor)
                 for (size_t c = 0; c < 4; ++c) base[c] *= in[size_t(Varyings::kColorAt) + c];
             if constexpr (Varyings::kUv)
@@ -324,7 +345,7 @@ private:
                 vis.fill(splat(1.0f));
                 if constexpr (Varyings::kWorld) light_visibility(u->lights, vec3_at(Varyings::kWorldAt), vis);
                 const vec3x8 n = normalize(vec3_at(Varyings::kNormalAt));
-                vec3x8 d = diffuse_intensity(u->lights, n, vis), spec{splat(0.0f), splat(0.0f), splat(0.0f)};
+                vec3x8 d = diffuse_intensity<Varyings::kWorld>(u->lights, n, vis, k.ambient), spec{splat(0.0f), splat(0.0f), splat(0.0f)};
                 if constexpr (Varyings::kSpecular) {
                     if (u->has_specular || u->lights.positional_count) {
                         const vec3x8 p = vec3_at(Varyings::kWorldAt);
@@ -346,7 +367,7 @@ private:
                     }
                 }
             }
-            if (u->tone_mapping.active()) tone_map(u->tone_mapping, out);
+            if (k.tone_mapped) tone_map(u->tone_mapping, out);
         }
     }
 };
