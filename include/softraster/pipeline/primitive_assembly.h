@@ -7,6 +7,7 @@
 // space (viewport.h) and kept beside the post-transform buffer: a triangle's corner is an
 // index into one or the other.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -29,8 +30,9 @@ inline int vertices_per_primitive(Topology t) {
 inline void validate_indices(std::span<const uint32_t> indices, size_t vertex_count, Topology t) {
     if (indices.size() % size_t(vertices_per_primitive(t)) != 0)
         throw std::invalid_argument("index count is not a multiple of the primitive size");
-    for (uint32_t i : indices)
-        if (i >= vertex_count) throw std::out_of_range("index past the end of the vertex buffer");
+    uint32_t largest = 0;  // (the largest first, a loop that vectorizes, then one test)
+    for (uint32_t i : indices) largest = std::max(largest, i);
+    if (!indices.empty() && largest >= vertex_count) throw std::out_of_range("index past the end of the vertex buffer");
 }
 
 // A corner flagged with kClippedVertex indexes the clipper's output, otherwise the
