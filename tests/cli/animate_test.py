@@ -10,6 +10,7 @@ import base64, json, os, shutil, struct, subprocess, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, '..', 'tools'))
+from checks import check, failures  # noqa: E402
 import imgdiff  # noqa: E402
 
 exe, work = sys.argv[1:3]
@@ -17,16 +18,11 @@ shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 MODEL = os.path.join(HERE, '..', 'scenes', 'models', 'normal_mapped.gltf')
 COMMON = ['--turntable', '2', '--fps', '10', '--size', '96x64', '--samples', '1']
-failures = []
 
 
 def run(args, cwd=work):
     return subprocess.run([exe] + args, capture_output=True, text=True, timeout=300, cwd=cwd)
 
-
-def check(name, ok, detail=''):
-    if not ok:
-        failures.append('%s %s' % (name, detail))
 
 
 def probe(path):

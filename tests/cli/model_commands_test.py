@@ -4,10 +4,12 @@
 CORPUS is Debian's assimp-testmodels folder (/usr/share/assimp/models)."""
 import json, os, shutil, signal, struct, subprocess, sys, time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+from checks import check, failures  # noqa: E402
+
 exe, corpus, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-failures = []
 DUCK = os.path.join(corpus, 'Collada', 'duck.dae')
 BOX = os.path.join(corpus, 'glTF2', 'BoxTextured-glTF', 'BoxTextured.gltf')
 CAMERAS = os.path.join(corpus, 'glTF2', 'cameras', 'Cameras.gltf')
@@ -22,10 +24,6 @@ def png_size(path):
         data = f.read(24)
     return struct.unpack('>II', data[16:24]) if data[:8] == b'\x89PNG\r\n\x1a\n' else None
 
-
-def check(name, ok, detail=''):
-    if not ok:
-        failures.append('%s %s' % (name, detail))
 
 
 # render MODEL: size, views, flags that only models take.

@@ -7,15 +7,13 @@ scene's background color among them, at most 23 rows (one left for the prompt); 
 no file is written. Outside a terminal the size comes from $COLUMNS and $LINES."""
 import json, os, shutil, subprocess, sys, time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+from checks import check, failures  # noqa: E402
+
 exe, work = sys.argv[1:3]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-failures = []
 
-
-def check(name, ok, detail=''):
-    if not ok:
-        failures.append('%s %s' % (name, detail))
 
 
 scene = os.path.join(work, 'red.json')

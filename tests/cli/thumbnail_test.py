@@ -7,21 +7,17 @@ CORPUS is Debian's assimp-testmodels folder (/usr/share/assimp/models)."""
 import os, shutil, subprocess, sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+from checks import check, failures, finish  # noqa: E402
 from imgdiff import read_png  # noqa: E402
 
 exe, corpus, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-failures = []
 GLB = os.path.join(corpus, 'glTF2', 'BoxTextured-glTF-Binary', 'BoxTextured.glb')
 PLY = os.path.join(corpus, 'PLY', 'Wuson.ply')
 FBX = os.path.join(corpus, 'FBX', 'spider.fbx')
 STL = os.path.join(corpus, 'STL', 'Spider_binary.stl')
 
-
-def check(name, ok, detail=''):
-    if not ok:
-        failures.append('%s %s' % (name, detail))
 
 
 def run(*args, timeout=120):
@@ -79,7 +75,4 @@ r = run('--timeout', '1', slow, out)
 check('timeout', r.returncode == 3 and '--timeout' in r.stderr and slow in r.stderr and left_nothing(out), '%d %r' % (r.returncode, r.stderr))
 os.remove(slow)
 
-for f in failures:
-    print('FAIL:', f)
-print('%d passed, %d failed' % (0 if failures else 1, len(failures)))
-sys.exit(1 if failures else 0)
+finish()

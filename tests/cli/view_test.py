@@ -16,13 +16,9 @@ shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, '..', 'tools'))
+from checks import check, failures  # noqa: E402
 import imgdiff  # noqa: E402
-failures = []
 
-
-def check(name, ok, detail=''):
-    if not ok:
-        failures.append('%s %s' % (name, detail))
 
 
 def same(a, b):

@@ -5,17 +5,13 @@ import json, math, os, shutil, struct, subprocess, sys, zlib
 
 exe, corpus, work = sys.argv[1:4]
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+from checks import check, failures, finish  # noqa: E402
 from imgdiff import read_png  # noqa: E402
 
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-failures = []
 DUCK = os.path.join(corpus, 'Collada', 'duck.dae')
 
-
-def check(name, ok, detail=''):
-    if not ok:
-        failures.append('%s %s' % (name, detail))
 
 
 def read_png16(path):
@@ -126,7 +122,4 @@ check('missing model', r.returncode == 2 and 'missing.glb' in r.stderr and len(r
 r = subprocess.run([exe, 'views', os.path.join(corpus, 'invalid', 'empty.obj'), '--out', os.path.join(work, 'bad', 'x')], capture_output=True, text=True)
 check('bad model: exit 2, no folder', r.returncode == 2 and 'empty.obj' in r.stderr and not os.path.exists(os.path.join(work, 'bad')), r.stderr)
 
-for f in failures:
-    print('FAIL:', f)
-print('%d passed, %d failed' % (0 if failures else 1, len(failures)))
-sys.exit(1 if failures else 0)
+finish()

@@ -11,18 +11,16 @@ assimp-testmodels (the files of cli/thumbnails_corpus_test.py).
   * The command `python3 -m softraster.dask`."""
 import json, os, shutil, signal, subprocess, sys, threading, time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+from checks import check, failures, finish  # noqa: E402
+
 # (Dask's worker processes import this file again as __mp_main__: nothing runs at import.)
 sys.path.insert(0, sys.argv[2] if len(sys.argv) > 2 else '')
 from dask.distributed import Client, LocalCluster  # noqa: E402
 from softraster.dask import render_files  # noqa: E402
 
 EXTENSIONS = ('.gltf', '.glb', '.obj', '.fbx', '.stl', '.dae', '.3ds', '.ply')
-failures = []
 
-
-def check(name, ok, detail=''):
-    if not ok:
-        failures.append('%s %s' % (name, str(detail)[:300]))
 
 
 def main(exe, python_dir, corpus, work):
@@ -119,10 +117,7 @@ def main(exe, python_dir, corpus, work):
     r = subprocess.run([sys.executable, '-m', 'softraster.dask', files[0], '--out', out, '--batch', '0'], capture_output=True, text=True, env=env)
     check('bad usage', r.returncode == 2 and 'batch' in r.stderr, r.stderr)
 
-    for f in failures:
-        print('FAIL:', f)
-    print('%d passed, %d failed' % (0 if failures else 1, len(failures)))
-    sys.exit(1 if failures else 0)
+    finish()
 
 
 if __name__ == '__main__':

@@ -7,19 +7,15 @@ import json, os, shutil, subprocess, sys, threading
 exe, python_dir, corpus, work = sys.argv[1:5]
 sys.path.insert(0, python_dir)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+from checks import check, failures, finish  # noqa: E402
 import numpy as np  # noqa: E402
 import softraster  # noqa: E402
 from imgdiff import read_png  # noqa: E402
 
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-failures = []
 DUCK = os.path.join(corpus, 'Collada', 'duck.dae')
 
-
-def check(name, ok, detail=''):
-    if not ok:
-        failures.append('%s %s' % (name, detail))
 
 
 def cli_picture(*args):
@@ -186,7 +182,4 @@ check('threads', all(np.array_equal(alone[v], together.get(v)) for v in views))
 check('docstrings', 'view:' in softraster.render_model.__doc__ and 'world_to_camera' in softraster.__doc__
       and 'depth' in softraster.Model.render.__doc__)
 
-for f in failures:
-    print('FAIL:', f)
-print('%d passed, %d failed' % (0 if failures else 1, len(failures)))
-sys.exit(1 if failures else 0)
+finish()
