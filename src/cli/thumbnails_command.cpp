@@ -28,6 +28,7 @@
 #include "cli/model_options.h"
 #include "cli/progress.h"
 #include "softraster/error.h"
+#include "softraster/io/atomic_write.h"
 #include "softraster/io/image_io.h"
 #include "softraster/scene/model.h"
 #include "softraster/scene/scene_renderer.h"
@@ -317,15 +318,11 @@ int run_thumbnails(const ThumbnailsOptions& opt) {
     }
     const fs::path report_path = opt.report.empty() ? out / "thumbnails.json" : fs::path(opt.report);
     const std::string text = report.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
-    const fs::path tmp = report_path.string() + ".tmp";
-    if (FILE* f = std::fopen(tmp.c_str(), "wb")) {
-        const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-        if (std::fclose(f) == 0 && ok) fs::rename(tmp, report_path, ec);
-        else fs::remove(tmp, ec);
-    } else {
-        ec = std::make_error_code(std::errc(errno));
+    try {
+        write_file_atomically(report_path, text);
+    } catch (const std::runtime_error& e) {
+        std::fprintf(stderr, "softraster: error: cannot write the report: %s\n", e.what());
     }
-    if (ec) std::fprintf(stderr, "softraster: error: %s: cannot write the report (%s)\n", report_path.string().c_str(), ec.message().c_str());
     std::fprintf(stderr, "%zu files: %zu drawn, %zu failed, %zu skipped in %.1f s (%.1f files/s); report: %s\n",
                  items.size(), drawn, failed, skipped, seconds, seconds > 0 ? double(drawn) / seconds : 0.0,
                  report_path.string().c_str());

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -15,6 +14,7 @@
 #include "cli/model_options.h"
 #include "cli/progress.h"
 #include "softraster/error.h"
+#include "softraster/io/atomic_write.h"
 #include "softraster/io/image_io.h"
 #include "softraster/io/image_write.h"
 #include "softraster/pipeline/resolve.h"
@@ -103,10 +103,8 @@ int run_views(const ViewsOptions& opt) {
         json view = {{"color", std::string(stem) + ".png"}, {"to_eye", {dirs[i].x, dirs[i].y, dirs[i].z}},
                      {"eye", {scene.camera.eye.x, scene.camera.eye.y, scene.camera.eye.z}},
                      {"K", rows(camera_intrinsics(scene.camera, scene.width, scene.height))},
-                     {"world_to_camera", rows(world_to_camera_cv(scene.camera))}};
-        json gl = view["world_to_camera"];  // (OpenGL's: the y and z rows back)
-        for (size_t c = 0; c < 4; ++c) gl[1][c] = -gl[1][c].get<double>(), gl[2][c] = -gl[2][c].get<double>();
-        view["world_to_camera_gl"] = gl;
+                     {"world_to_camera", rows(world_to_camera_cv(scene.camera))},
+                     {"world_to_camera_gl", rows(world_to_camera_gl(scene.camera))}};
         write_png(color, fs::path(opt.out) / (std::string(stem) + ".png"));
         const fs::path stem_path = fs::path(opt.out) / stem;
         const bool png16 = opt.format == "png16";
@@ -129,12 +127,7 @@ int run_views(const ViewsOptions& opt) {
     }
     progress.clear();
     const fs::path json_path = fs::path(opt.out) / "cameras.json";
-    {
-        std::ofstream file(fs::path(json_path).concat(".tmp"));
-        file << cameras.dump(1) << "\n";
-        if (!file.flush()) throw InputError(json_path.string() + ": cannot write");
-    }
-    fs::rename(fs::path(json_path).concat(".tmp"), json_path);
+    write_file_atomically(json_path, cameras.dump(1) + "\n");  // last: its presence says the views are all there
     std::fprintf(stderr, "wrote %zu views and %s\n", dirs.size(), json_path.string().c_str());
     return 0;
 }

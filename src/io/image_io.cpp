@@ -1,5 +1,7 @@
 #include "softraster/io/image_io.h"
 
+#include "softraster/io/atomic_write.h"
+
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -233,26 +235,7 @@ std::string encode_png(const Image& image) {
 }
 
 void write_png(const Image& image, const std::filesystem::path& path) {
-    const std::string png = encode_png(image);
-    std::filesystem::path tmp = path;
-    tmp += ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
-        out.write(png.data(), std::streamsize(png.size()));
-        out.close();
-        if (!out) {
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            throw std::runtime_error(path.string() + ": write failed");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw std::runtime_error(path.string() + ": cannot write (" + ec.message() + ")");
-    }
+    write_file_atomically(path, encode_png(image));
 }
 
 }  // namespace softraster

@@ -1,5 +1,7 @@
 #include "softraster/io/image_write.h"
 
+#include "softraster/io/atomic_write.h"
+
 #include <png.h>
 #include <stb_image_write.h>
 
@@ -20,23 +22,6 @@
 namespace softraster {
 namespace {
 
-// Runs write(tmp) for a temporary file beside `path`, then renames it into place.
-void write_atomically(const std::filesystem::path& path, const std::function<void(const std::string& tmp)>& write) {
-    std::filesystem::path tmp = path;
-    tmp += ".tmp";
-    std::error_code ec;
-    try {
-        write(tmp.string());
-    } catch (...) {
-        std::filesystem::remove(tmp, ec);
-        throw;
-    }
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw std::runtime_error(path.string() + ": cannot write (" + ec.message() + ")");
-    }
-}
 
 struct File {
     FILE* f;

@@ -119,11 +119,8 @@ py::dict camera_of(const Scene& scene) {
     const Camera& c = scene.camera;
     py::dict d;
     d["K"] = py::array(py::cast(camera_intrinsics(c, scene.width, scene.height)));
-    const auto cv = world_to_camera_cv(c);
-    d["world_to_camera"] = py::array(py::cast(cv));
-    auto gl = cv;
-    for (size_t j = 0; j < 4; ++j) gl[1][j] = -cv[1][j], gl[2][j] = -cv[2][j];
-    d["world_to_camera_gl"] = py::array(py::cast(gl));
+    d["world_to_camera"] = py::array(py::cast(world_to_camera_cv(c)));
+    d["world_to_camera_gl"] = py::array(py::cast(world_to_camera_gl(c)));
     d["width"] = scene.width, d["height"] = scene.height;
     d["near"] = c.near, d["far"] = c.far, d["orthographic"] = c.orthographic;
     return d;
@@ -245,12 +242,12 @@ public:
         const ssize_t v = ssize_t(mesh.vertices.size()), t = ssize_t(mesh.triangle_count());
         py::array_t<float> positions({v, ssize_t(3)}), normals({v, ssize_t(3)});
         py::array_t<uint32_t> triangles({t, ssize_t(3)});
-        const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(o.model)));
+        const glm::mat3 to_world_normal(normal_matrix(o.model));
         float* p = positions.mutable_data();
         float* n = normals.mutable_data();
         for (const MeshVertex& vertex : mesh.vertices) {
             const glm::vec3 world = glm::vec3(o.model * glm::vec4(vertex.position, 1.0f));
-            const glm::vec3 nw = normal_matrix * vertex.normal;
+            const glm::vec3 nw = to_world_normal * vertex.normal;
             const float len = glm::length(nw);
             for (int k = 0; k < 3; ++k) *p++ = world[k], *n++ = len > 0.0f ? nw[k] / len : 0.0f;
         }

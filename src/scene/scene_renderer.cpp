@@ -275,7 +275,7 @@ SceneRenderer::SceneRenderer(const Scene& scene, unsigned threads)
         SurfaceUniforms& u = d.uniforms;
         u.mvp = glm::mat4(glm::dmat4(proj) * glm::dmat4(view) * glm::dmat4(o.model));
         u.model = o.model;
-        u.normal_matrix = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(o.model)))));
+        u.normal_matrix = glm::mat3(normal_matrix(o.model));
         u.eye = scene.camera.eye;
         u.lights = lights;
         u.color = o.material.color;

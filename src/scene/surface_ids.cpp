@@ -83,8 +83,8 @@ std::vector<glm::vec3> surface_normals(const Scene& scene, const SurfaceIds& ids
         return glm::dvec3(p) / p.w;
     };
     const glm::dmat3 to_camera = glm::dmat3(1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, -1.0) * glm::dmat3(view);  // OpenCV's axes
-    std::vector<glm::dmat3> normal_matrix;  // per object: transpose(inverse(mat3(M)))
-    for (const SceneObject& o : scene.objects) normal_matrix.push_back(glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(o.model)))));
+    std::vector<glm::dmat3> normal_matrices;  // per object
+    for (const SceneObject& o : scene.objects) normal_matrices.push_back(normal_matrix(o.model));
     std::vector<glm::vec3> out(ids.object.size(), glm::vec3(0.0f));
     for (int y = 0; y < ids.height; ++y)
         for (int x = 0; x < ids.width; ++x) {
@@ -110,7 +110,7 @@ std::vector<glm::vec3> surface_normals(const Scene& scene, const SurfaceIds& ids
             } else {
                 const glm::dvec3 tv = origin - w[0], qv = glm::cross(tv, e1);
                 const double b1 = glm::dot(tv, pv) / det, b2 = glm::dot(dir, qv) / det;
-                n = normal_matrix[size_t(ids.object[p])] * ((1.0 - b1 - b2) * glm::dvec3(v[0]->normal) + b1 * glm::dvec3(v[1]->normal) + b2 * glm::dvec3(v[2]->normal));
+                n = normal_matrices[size_t(ids.object[p])] * ((1.0 - b1 - b2) * glm::dvec3(v[0]->normal) + b1 * glm::dvec3(v[1]->normal) + b2 * glm::dvec3(v[2]->normal));
             }
             if (space == NormalSpace::Camera) n = to_camera * n;
             const double len = glm::length(n);

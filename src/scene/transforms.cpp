@@ -46,11 +46,19 @@ float view_distance(float z, const Camera& c) {
     return float(2.0 * n * f / ((f + n) - ndc * (f - n)));
 }
 
-std::array<std::array<double, 4>, 4> world_to_camera_cv(const Camera& c) {
+glm::dmat3 normal_matrix(const glm::mat4& model) { return glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(model)))); }
+
+std::array<std::array<double, 4>, 4> world_to_camera_gl(const Camera& c) {
     const glm::mat4 view = view_matrix(c);
     std::array<std::array<double, 4>, 4> m{};
     for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) m[size_t(i)][size_t(j)] = (i == 1 || i == 2 ? -1.0 : 1.0) * double(view[j][i]);  // (glm: column-major)
+        for (int j = 0; j < 4; ++j) m[size_t(i)][size_t(j)] = double(view[j][i]);  // (glm: column-major)
+    return m;
+}
+
+std::array<std::array<double, 4>, 4> world_to_camera_cv(const Camera& c) {
+    std::array<std::array<double, 4>, 4> m = world_to_camera_gl(c);
+    for (size_t j = 0; j < 4; ++j) m[1][j] = -m[1][j], m[2][j] = -m[2][j];
     return m;
 }
 

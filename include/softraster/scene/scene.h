@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -155,6 +156,9 @@ struct Scene {
 // precision from the left (rotate_euler gives ((m * Rz) * Ry) * Rx, for keyframes too).
 glm::dmat4 rotate_euler(const glm::dmat4& m, const glm::dvec3& rotate_deg);
 glm::mat4 model_matrix(const glm::vec3& translate, const glm::vec3& rotate_deg, const glm::vec3& scale);
+// The normal matrix transpose(inverse(mat3(M))), in double precision: normals follow a
+// non-uniform scale the way the surface does.
+glm::dmat3 normal_matrix(const glm::mat4& model);
 // gluLookAt and gluPerspective / glOrtho for the scene's camera and image aspect.
 glm::mat4 view_matrix(const Camera& c);
 glm::mat4 projection_matrix(const Camera& c, int width, int height);
@@ -165,6 +169,9 @@ std::array<std::array<double, 3>, 3> camera_intrinsics(const Camera& c, int widt
 // World to camera, row by row, in OpenCV's convention (the camera looks down +z, y down):
 // OpenGL's view_matrix with its y and z rows negated.
 std::array<std::array<double, 4>, 4> world_to_camera_cv(const Camera& c);
+// The same in OpenGL's convention (looking down -z, y up): view_matrix, row by row. The two
+// differ by diag(1, -1, -1, 1).
+std::array<std::array<double, 4>, 4> world_to_camera_gl(const Camera& c);
 // The distance along the camera's view axis (world units, positive) of a surface at window
 // depth z in [0, 1] (depth_picture in resolve.h); infinity at z = 1, where nothing was drawn.
 float view_distance(float z, const Camera& c);
