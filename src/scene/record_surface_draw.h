@@ -80,7 +80,7 @@ SOFTRASTER_SURFACE_VARYING_COUNTS(SOFTRASTER_DECLARE_SURFACE_PHASES)
 // that layout. One shader of each layout names it here; surface_phases.cpp checks that every
 // surface shader's layout is listed. A layout missing here still works, compiled where it is used.
 #define SOFTRASTER_SURFACE_LAYOUTS(X)                                                                                       \
-    X(Unlit, false, false, false) X(Depth, false, false, false) X(Lambert, false, false, false) X(Unlit, false, true, false) \
+    X(Unlit, false, false, false) X(Lambert, false, false, false) X(Unlit, false, true, false)                          \
     X(Unlit, true, false, false) X(BlinnPhong, false, false, false) X(Lambert, false, true, false)                          \
     X(Lambert, true, false, false) X(Unlit, true, true, false) X(BlinnPhong, false, true, false)                           \
     X(BlinnPhong, true, false, false) X(Lambert, true, true, false) X(BlinnPhong, true, true, false)                       \

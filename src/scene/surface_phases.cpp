@@ -51,7 +51,7 @@ SOFTRASTER_SURFACE_MODELS(SOFTRASTER_CHECK_LAYOUTS)
 #define SOFTRASTER_LISTED_ONCE(M, TEXTURED, COLORED, NORMAL_MAPPED) \
     static_assert(listed_once<SurfaceShader<Shading::M, TEXTURED, COLORED, NORMAL_MAPPED>>(), "a layout listed twice");
 SOFTRASTER_SURFACE_LAYOUTS(SOFTRASTER_LISTED_ONCE)
-static_assert(std::tuple_size_v<SurfaceLayouts> == 16, "CMakeLists.txt generates a back-end file for each of layouts 1 to 15");
+static_assert(std::tuple_size_v<SurfaceLayouts> == 15, "CMakeLists.txt generates a back-end file for each of layouts 1 to 14");
 #define SOFTRASTER_CHECK_COUNTS(M) static_assert(counts_listed<Shading::M>(), "add " #M "'s varying counts to SOFTRASTER_SURFACE_VARYING_COUNTS");
 SOFTRASTER_SURFACE_MODELS(SOFTRASTER_CHECK_COUNTS)
 }  // namespace

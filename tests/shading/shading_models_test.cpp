@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "softraster/context.h"
 #include "softraster/pipeline/fragment_shading.h"
 #include "softraster/shading/surface_shader.h"
 
@@ -203,6 +204,33 @@ TEST(ShadingModels, NormalsAndDepth) {
     const SurfaceUniforms u = uniforms();
     expect_vec4(shade<Shading::Normals>(u, surface({0, 0, -3})), glm::vec4(0.5f, 0.5f, 0.0f, 1.0f));
     expect_vec4(shade<Shading::Depth>(u, surface({0, 0, 1}), 0.625f), glm::vec4(0.625f, 0.625f, 0.625f, 1.0f));
+}
+
+// A blended triangle whose varyings are the same at every corner is shaded once (the tile
+// back end's constant color), but only for a shader whose color is its varyings' alone: the
+// depth shader's one varying is constant, and its color is each pixel's own depth.
+TEST(ShadingModels, BlendedDepthIsShadedAtEveryPixel) {
+    constexpr int W = 32, H = 32;
+    SurfaceUniforms u;  // mvp: identity, the positions are in clip space
+    const std::vector<MeshVertex> v = {{{-1, -1, -0.8f}}, {{3, -1, 0.8f}}, {{-1, 3, -0.8f}}};  // window z 0.1 at the left, 0.9 at x = 64
+    const std::vector<uint32_t> indices = {0, 1, 2};
+    for (const bool generic : {false, true}) {
+        SCOPED_TRACE(generic ? "generic path" : "best path");
+        simd::use_generic_path(generic);
+        Framebuffer fb(W, H);
+        Context ctx(fb);
+        ctx.clear(glm::vec4(0));
+        ctx.state.cull = CullMode::None;
+        ctx.state.depth_test = false;
+        ctx.state.blend = BlendMode::Alpha;
+        ctx.draw_triangles(SurfaceShader<Shading::Depth, false, false>{&u}, std::span<const MeshVertex>(v), std::span<const uint32_t>(indices));
+        ctx.finish();
+        for (const int x : {0, 15, 31}) {
+            const float z = 0.1f + 0.8f * (float(x) + 0.5f) / 64.0f;
+            EXPECT_NEAR(fb.color_data()[fb.sample_index(x, 0)].r, z * 255.0f, 1.0f) << x;
+        }
+    }
+    simd::use_generic_path(false);
 }
 
 TEST(ShadingModels, BackFacesAreLitWithTheNormalAsItIs) {

@@ -3,9 +3,9 @@
 //
 // The tile loops (tile_back_end.h, hidden_surface_removal.h, general_back_end.h) depend on a
 // shader only through its varyings: how many there are, which are flat, where a texture's
-// coordinate derivatives go, whether the color depends on the varyings alone, and which
-// batch entry points the shader has. That is its VaryingLayout. The loops are compiled once
-// per layout (the scene's 32 surface shaders have 15), and call the shader's fragment code
+// coordinate derivatives go, and which batch entry points the shader has. That is its
+// VaryingLayout. The loops are compiled once per layout (the scene's 32 surface shaders
+// have 14), and call the shader's fragment code
 // through a table of function pointers chosen when the draw is recorded (FragmentCode).
 // Each call shades a batch, never one group alone: up to two rows of a triangle's span
 // (FragmentGroups), one flush of the fragment queue, or one pixel on the scalar paths that
@@ -24,12 +24,11 @@ namespace softraster {
 
 // What the loops know of a shader at compile time. (It also serves as the shader type for
 // interpolation.h, which reads kFlat, kDerivativeOf and kDerivativeAt.)
-template <int Count, uint64_t FlatBits, int DerivativeOf, int DerivativeAt, bool VaryingsOnly, bool Pure, bool Batch, bool QuadRows>
+template <int Count, uint64_t FlatBits, int DerivativeOf, int DerivativeAt, bool Pure, bool Batch, bool QuadRows>
 struct VaryingLayout {
     static constexpr int N = Count;
     static constexpr uint64_t kFlat = FlatBits;
     static constexpr int kDerivativeOf = DerivativeOf, kDerivativeAt = DerivativeAt;
-    static constexpr bool kVaryingsOnly = VaryingsOnly;  // VaryingsOnlyShader
     static constexpr bool kPure = Pure;                  // PureShader
     static constexpr bool kBatch = Batch;                // has fragment_batch (BatchShader)
     static constexpr bool kQuadRows = QuadRows;          // has fragment_quad_rows and derivatives
@@ -48,7 +47,7 @@ inline constexpr int kDerivativeAtShader = [] {
 
 template <Shader S>
 using LayoutOf = VaryingLayout<kVaryingCount<typename S::Varyings>, kFlatVaryings<S>, kDerivativeOfShader<S>, kDerivativeAtShader<S>,
-                               VaryingsOnlyShader<S>, PureShader<S>, BatchShader<S>, QuadRowShader<S> && DerivativeShader<S>>;
+                               PureShader<S>, BatchShader<S>, QuadRowShader<S> && DerivativeShader<S>>;
 
 // Groups of eight fragments to shade with one call: each group's window depths, first
 // pixel (x, y) and varyings in, its colors out. In a batch of quad-row pairs, groups 2k and
@@ -77,6 +76,10 @@ struct FragmentCalls {
 template <int N>
 struct FragmentCode {
     FragmentCalls<N> wide, generic;  // compiled for AVX2 (simd.h, on_best_path), and for any x86-64
+    // The color depends on the varyings alone (VaryingsOnlyShader): a value, not part of the
+    // layout, since it only lets blended draws shade a triangle of constant varyings once
+    // (tile_back_end.h), and a copy of the loops per value would cost a back end's build.
+    bool varyings_only = false;
     const FragmentCalls<N>& path(bool wide_lanes) const { return wide_lanes ? wide : generic; }
 };
 
@@ -164,7 +167,8 @@ constexpr FragmentCalls<kVaryingCount<typename S::Varyings>> calls() {
 // the draw is recorded: with the shader, not with the loops).
 template <Shader S>
 inline constexpr FragmentCode<kVaryingCount<typename S::Varyings>> kFragmentCode{fragment_code::calls<S, true>(),
-                                                                                  fragment_code::calls<S, false>()};
+                                                                                  fragment_code::calls<S, false>(),
+                                                                                  VaryingsOnlyShader<S>};
 
 template <Shader S>
 LayoutShader<LayoutOf<S>> layout_shader(const S& shader) {

@@ -33,8 +33,7 @@ struct TileBackEnd {
     static constexpr uint64_t Flat = L::kFlat;
     // Blended draws of shaders that read varyings alone shade a triangle whose varyings are
     // constant once (draw_groups); setup looks for those only in them (setup_planes).
-    static constexpr bool kConstant = L::kVaryingsOnly;
-    bool find_constant() const { return kConstant && blend.blends(); }
+    bool find_constant() const { return shader.code->varyings_only && blend.blends(); }
     // Single-sampled opaque draws may test stencil too: general_back_end.h sends those that
     // do here when nothing after the shader can drop a fragment. They run the fragment queue
     // or EightPixelGroups, with the stencil test where depth is tested: a choice made per
@@ -86,7 +85,7 @@ struct TileBackEnd {
             if (strategy() == Strategy::FragmentQueue) {
                 static thread_local FragmentQueue<N, Samples> queue;
                 queue.start(calls.groups, shader.self, fb);
-                // (Opaque: no constant varyings sought, see kConstant.)
+                // (Opaque: no constant varyings sought, see find_constant.)
                 for_each_triangle_setup<Samples, /*Planes=*/false, Flat>(triangles, state, tx, ty, rect, [&](TriangleSetup<N>& setup, uint32_t) {
                     if constexpr (Samples == 1) {  // (else draw_groups would be compiled, never to run)
                         if (is_large(setup.bounds)) {
@@ -102,7 +101,7 @@ struct TileBackEnd {
                 return shaded;
             }
         }
-        for_each_triangle_setup<Samples, true, Flat, kConstant>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
+        for_each_triangle_setup<Samples, true, Flat, /*Constant=*/true>(triangles, state, tx, ty, rect, [&](const TriangleSetup<N>& setup, uint32_t) {
             if constexpr (Samples == 1 && L::kBatch) {
                 if (WideLanes || stencil() || setup.bounds.x1 - setup.bounds.x0 >= 16) {  // EightPixelGroups
                     shaded += draw_groups<WideLanes>(calls, setup, pending);
@@ -125,7 +124,7 @@ struct TileBackEnd {
             const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
             shade_fragment<Samples>(calls, shader.self, tests.depth, blend, fb, px.x, px.y, px.mask, px.z.data(),
                                              interpolate_depth(t, i, j), t.front_facing,
-                                             [&] { return interpolate_varyings<L, kConstant>(t, i, j); }, shaded);
+                                             [&] { return interpolate_varyings<L, true>(t, i, j); }, shaded);
         });
         return shaded;
     }
@@ -177,14 +176,12 @@ struct TileBackEnd {
         // triangle, shaded here once.
         std::array<f8, 4> constant_rgba{};
         const std::array<f8, 4>* constant = nullptr;
-        if constexpr (kConstant) {
-            if (t.constant_varyings) {
-                groups.add(0, 0, splat_i(0), splat(0.0f)) = interpolate_varyings<L, kConstant>(t, splat(0.0f), splat(0.0f));
-                calls.groups(shader.self, groups.batch);
-                constant_rgba = groups.batch.rgba[0];
-                constant = &constant_rgba;
-                groups.batch.count = 0;
-            }
+        if (t.constant_varyings) {  // (found only where find_constant)
+            groups.add(0, 0, splat_i(0), splat(0.0f)) = interpolate_varyings<L, true>(t, splat(0.0f), splat(0.0f));
+            calls.groups(shader.self, groups.batch);
+            constant_rgba = groups.batch.rgba[0];
+            constant = &constant_rgba;
+            groups.batch.count = 0;
         }
         const Rows rows{calls, t, pending, constant};
         // A shader that shades two rows of quads at once (L::kQuadRows) gets the groups of a
@@ -281,7 +278,7 @@ struct TileBackEnd {
                 else blend_group</*Blended=*/true>(blend, color_row, x, width, pass, constant_source);  // (only blended draws look)
                 return;
             }
-            groups.add(span.y, x, pass, z) = interpolate_varyings<L, kConstant>(t, i, j);
+            groups.add(span.y, x, pass, z) = interpolate_varyings<L, true>(t, i, j);
             if (groups.full()) shade_and_merge<WideLanes>(r.calls.groups, shader.self, blend, fb, groups);
         });
         if (custom.count > 0) blend_row<WideLanes>(blend, color_row, width, custom);
@@ -318,7 +315,7 @@ struct TileBackEnd {
                 }
                 for (int k = 0; k < 2; ++k) {
                     if (!any(pass[k])) continue;
-                    groups.add(first.y + k, x, pass[k], z[k]) = interpolate_varyings<L, kConstant>(t, i, k ? j1 : j0);
+                    groups.add(first.y + k, x, pass[k], z[k]) = interpolate_varyings<L, true>(t, i, k ? j1 : j0);
                     if (groups.full()) shade_and_merge<WideLanes>(r.calls.groups, shader.self, blend, fb, groups);
                 }
             });
