@@ -74,22 +74,31 @@ HiddenSurfaceRun hidden_surface_run(std::span<const DrawPtr> draws, size_t first
 // back end's DepthOnly), which has no second pass. It needs the triangle's edges and depth
 // only, so it is compiled once per sample count and CPU path (simd.h) for every varying count.
 template <int Samples>
-void visible_samples(const TriangleEdges& edges, const DepthTest& test, Framebuffer& fb, const Rect& rect, uint32_t me, uint32_t* owners) {
-    // Copies in locals: a store to the depth buffer or the owners may alias anything a
-    // reference reaches, which would be loaded again after each.
-    const TriangleEdges t = edges;
+void visible_samples(const TriangleEdges& t, const DepthTest& test, Framebuffer& fb, const Rect& rect, uint32_t me, uint32_t* owners) {
+    // Copies in locals of what the loops read after a store: a store to the depth buffer or
+    // the owners may alias anything a reference reaches, which would be loaded again after
+    // each. (The edges are read once, before the first store: rasterization.h.)
+    const DepthPlane z_plane = t.z;
+    const int origin_x = t.origin_x, origin_y = t.origin_y;
     const DepthTest depth = test;
     const int width = fb.width();
     if constexpr (Samples == 1) {  // eight pixels at a time
         using namespace simd;
+        auto group_depth = [&](int x, f8 j) { return z_plane.at(to_float(kLaneIndex) + float(x - origin_x), j); };
+        if (!owners) {  // depth alone (a shadow map's): no owner row to find
+            rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
+                float* const depth_row = fb.depth_data() + fb.sample_index(0, y);
+                const f8 j = splat(float(y - origin_y));
+                for_each_group(x_begin, x_end, [&](int x, i8 covered) { depth.test_group(depth_row, x, width, group_depth(x, j), covered); });
+            });
+            return;
+        }
         rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
             int32_t* owner = reinterpret_cast<int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
             float* const depth_row = fb.depth_data() + fb.sample_index(0, y);
-            const f8 j = splat(float(y - t.origin_y));
+            const f8 j = splat(float(y - origin_y));
             for_each_group(x_begin, x_end, [&](int x, i8 covered) {
-                const f8 z = interpolate_depth(t, to_float(kLaneIndex) + float(x - t.origin_x), j);
-                const i8 pass = depth.test_group(depth_row, x, width, z, covered);
-                if (!owners) return;
+                const i8 pass = depth.test_group(depth_row, x, width, group_depth(x, j), covered);
                 const int ox = x - rect.x0, ow = width - rect.x0;
                 store_group(owner, ox, ow, select(pass, splat_i(int32_t(me)), load_group<i8>(owner, ox, ow)));
             });

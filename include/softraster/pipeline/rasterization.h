@@ -122,6 +122,8 @@ void rasterize_spans(const TriangleEdges& t, const Rect& rect, OnSpan&& on_span)
     for (size_t i = 0; i < 3; ++i)
         row[i] = t.edge(int(i), int64_t(x0) * kSubpixelOne + 128, int64_t(y0) * kSubpixelOne + 128) + t.bias[i];
     const std::array<int64_t, 3> step_x = {t.A[0] * kSubpixelOne, t.A[1] * kSubpixelOne, t.A[2] * kSubpixelOne};
+    // (In locals: on_span may store to memory that a reference to t could alias.)
+    const std::array<int64_t, 3> step_y = {t.B[0] * kSubpixelOne, t.B[1] * kSubpixelOne, t.B[2] * kSubpixelOne};
     for (int y = y0; y < y1; ++y) {
         int lo = 0, hi = n;
         if (n > kNarrow) {
@@ -142,7 +144,7 @@ void rasterize_spans(const TriangleEdges& t, const Rect& rect, OnSpan&& on_span)
             while (hi < n && inside()) ++hi, step();
         }
         if (lo < hi) on_span(y, x0 + lo, x0 + hi);
-        for (size_t i = 0; i < 3; ++i) row[i] += t.B[i] * kSubpixelOne;
+        for (size_t i = 0; i < 3; ++i) row[i] += step_y[i];
     }
 }
 
