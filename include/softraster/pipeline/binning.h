@@ -153,6 +153,9 @@ void add_to_tiles(TriangleBin<N>& bin, const TileGrid& grid, TriangleRef ref, co
         }
 }
 
+// The most (tile, triangle) pairs a thread keeps room for between draws (bin_triangles): 1.25 MB.
+inline constexpr size_t kKeptPending = size_t(1) << 16;
+
 // Groups the pending triangles by tile, keeping their order (a counting sort over the
 // chunk's range of tiles).
 template <int N>
@@ -182,8 +185,14 @@ void group_by_tile(TriangleBin<N>& bin) {
 template <int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
                    const Viewport& vp, const SampleExtent& samples, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
-    bin.clipped.clear();
+    // The pending list is scratch until group_by_tile: one per thread, kept from draw to
+    // draw (a small draw's own list was an allocation or more per draw), unless a huge
+    // chunk grew it. Most triangles touch one tile: room for one entry each up front.
+    static thread_local std::vector<typename TriangleBin<N>::Pending> scratch;
+    bin.pending.swap(scratch);
     bin.pending.clear();
+    bin.pending.reserve(indices.size() / 3);
+    bin.clipped.clear();
     bin.range = {};
     assemble_triangles(indices, post, planes, vp, flat, bin.clipped, [&](uint32_t ia, uint32_t ib, uint32_t ic) {
         const ShadedVertex<N>&a = bin.vertex(ia, post), &b = bin.vertex(ib, post), &c = bin.vertex(ic, post);
@@ -192,6 +201,8 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
         add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, a, b, c, pixel_bounds(a, b, c, samples), area2);
     });
     group_by_tile(bin);
+    bin.pending.swap(scratch);
+    if (scratch.capacity() > kKeptPending) scratch = {};
 }
 
 }  // namespace softraster

@@ -59,13 +59,15 @@ public:
     const TileRange& tiles() const { return range_; }
     size_t triangles_in_tile(int tile) const {
         const int k = local_tile(tile);
-        return k < 0 ? 0 : tile_triangles_[size_t(k)];
+        if (k < 0) return 0;
+        return one_bin_begin_ ? one_bin_begin_[k + 1] - one_bin_begin_[k] : tile_triangles_[size_t(k)];
     }
     // Pixels of the tile this command's triangles cover, summed (each triangle's area, at
     // most its bounds within the tile): an estimate of the overdraw.
     double covered_area(int tile) const {
         const int k = local_tile(tile);
-        return k < 0 ? 0.0 : tile_area_[size_t(k)];
+        if (k < 0) return 0.0;
+        return one_bin_area_ ? double(one_bin_area_[k]) : tile_area_[size_t(k)];
     }
 
     // Whether the command tests stencil (the framebuffer then needs a stencil buffer).
@@ -86,9 +88,19 @@ protected:
 
     // The per-tile totals of a command binned in `bins`, over the tiles any chunk touches.
     template <int N>
-    void sum_bins(const std::vector<TriangleBin<N>>& bins, const TileGrid& grid) {
+    void sum_bins(std::span<const TriangleBin<N>> bins, const TileGrid& grid) {
         binned_ = true;
         grid_ = grid;
+        // One chunk (every draw of up to kTriangleChunk triangles): its own per-tile lists
+        // are the totals, read in place instead of copied into two more allocations per draw.
+        if (bins.size() == 1) {
+            range_ = bins[0].range;
+            one_bin_begin_ = bins[0].tile_begin.data();
+            one_bin_area_ = bins[0].covered_area.data();
+            return;
+        }
+        one_bin_begin_ = nullptr;
+        one_bin_area_ = nullptr;
         range_ = {};
         for (const TriangleBin<N>& bin : bins)
             if (bin.range.count() > 0) range_.include(bin.range.x0, bin.range.y0), range_.include(bin.range.x1 - 1, bin.range.y1 - 1);
@@ -112,6 +124,8 @@ private:
     TileRange range_;
     std::vector<uint32_t> tile_triangles_;  // per tile of range_
     std::vector<double> tile_area_;
+    const uint32_t* one_bin_begin_ = nullptr;  // or a single bin's tile_begin and covered_area
+    const float* one_bin_area_ = nullptr;
 };
 
 class ClearCommand final : public Command {
@@ -223,7 +237,7 @@ public:
     bool uses_stencil() const override { return state_.stencil_test; }
     void prepare() override {
         post_.resize(vertices_.size());
-        bins_.resize(primitive_chunks());
+        if (primitive_chunks() > 1) bins_.resize(primitive_chunks());  // (one: one_bin_)
     }
     size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
     void process_vertex_chunk(size_t c, const DrawTarget& target) override {
@@ -236,23 +250,34 @@ public:
         const std::span<const uint32_t> chunk = indices_.subspan(begin * kPer, (end - begin) * kPer);
         const FlatVaryings flat{kFlatVaryings<S>, state_.provoking_vertex == ProvokingVertex::First};
         if constexpr (T == Topology::Triangles) {
-            phases::bin_triangles(chunk, post_.data(), target, sample_extent<BinSamples>(), FaceState{state_.cull, state_.front_face}, flat, bins_[c]);
+            phases::bin_triangles(chunk, post_.data(), target, sample_extent<BinSamples>(), FaceState{state_.cull, state_.front_face}, flat, bins()[c]);
         } else {
             const LinePointShape shape{state_.line_width, state_.point_size, target.fb->samples() > 1, state_.front_face};
-            bin_lines_points(T, chunk, post_.data(), target.planes, target.viewport, sample_extent<BinSamples>(), shape, flat, target.grid, bins_[c]);
+            bin_lines_points(T, chunk, post_.data(), target.planes, target.viewport, sample_extent<BinSamples>(), shape, flat, target.grid, bins()[c]);
         }
     }
-    void finish_binning(const TileGrid& grid) override { sum_bins(bins_, grid); }
+    void finish_binning(const TileGrid& grid) override { sum_bins<N>(bins(), grid); }
 
 protected:
-    BinnedTriangles<N> triangles() const { return {std::span<const TriangleBin<N>>(bins_), post_.data()}; }
+    BinnedTriangles<N> triangles() const { return {bins(), post_.data()}; }
+    // The chunks' bins: a draw of one chunk (most draws: up to kTriangleChunk triangles)
+    // keeps its bin inline, an allocation fewer per draw.
+    std::span<TriangleBin<N>> bins() {
+        if (!bins_.empty()) return bins_;
+        return {&one_bin_, primitive_chunks() == 1 ? size_t(1) : size_t(0)};
+    }
+    std::span<const TriangleBin<N>> bins() const {
+        if (!bins_.empty()) return bins_;
+        return {&one_bin_, primitive_chunks() == 1 ? size_t(1) : size_t(0)};
+    }
 
     S shader_;
     RenderState state_;
     std::span<const Vertex> vertices_;
     std::span<const uint32_t> indices_;
     std::vector<ShadedVertex<N>> post_;
-    std::vector<TriangleBin<N>> bins_;
+    std::vector<TriangleBin<N>> bins_;  // two chunks or more
+    TriangleBin<N> one_bin_;
 };
 
 template <Shader S, int Samples, Topology T = Topology::Triangles>
