@@ -153,9 +153,6 @@ void add_to_tiles(TriangleBin<N>& bin, const TileGrid& grid, TriangleRef ref, co
         }
 }
 
-// The most (tile, triangle) pairs a thread keeps room for between draws (bin_triangles): 1.25 MB.
-inline constexpr size_t kKeptPending = size_t(1) << 16;
-
 // Groups the pending triangles by tile, keeping their order (a counting sort over the
 // chunk's range of tiles).
 template <int N>
@@ -179,30 +176,41 @@ void group_by_tile(TriangleBin<N>& bin) {
     bin.tile_begin[0] = 0;
 }
 
+// The most (tile, triangle) pairs a thread keeps room for between draws (bin_pending): 1.25 MB.
+inline constexpr size_t kKeptPending = size_t(1) << 16;
+
+// Fills the bin's pending (tile, triangle) pairs (fill() calls add_to_tiles), then groups
+// them by tile. The pending list is scratch until then: one per thread, kept from draw to
+// draw (a small draw's own list was an allocation or more per draw) unless a huge chunk grew
+// it, with room for `expected` pairs up front.
+template <int N, class Fill>
+void bin_pending(TriangleBin<N>& bin, size_t expected, Fill&& fill) {
+    static thread_local std::vector<typename TriangleBin<N>::Pending> scratch;
+    bin.pending.swap(scratch);
+    bin.pending.clear();
+    bin.pending.reserve(expected);
+    fill();
+    group_by_tile(bin);
+    bin.pending.swap(scratch);
+    if (scratch.capacity() > kKeptPending) scratch = {};
+}
+
 // The front end's triangle half for one chunk of a draw, stage by stage: primitive assembly
 // and clipping (primitive_assembly.h), culling (culling.h), binning. A triangle whose bounds
 // hold no sample of the framebuffer's pattern (its extent `samples`, sample_pattern.h) is dropped.
 template <int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
                    const Viewport& vp, const SampleExtent& samples, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
-    // The pending list is scratch until group_by_tile: one per thread, kept from draw to
-    // draw (a small draw's own list was an allocation or more per draw), unless a huge
-    // chunk grew it. Most triangles touch one tile: room for one entry each up front.
-    static thread_local std::vector<typename TriangleBin<N>::Pending> scratch;
-    bin.pending.swap(scratch);
-    bin.pending.clear();
-    bin.pending.reserve(indices.size() / 3);
     bin.clipped.clear();
     bin.range = {};
-    assemble_triangles(indices, post, planes, vp, flat, bin.clipped, [&](uint32_t ia, uint32_t ib, uint32_t ic) {
-        const ShadedVertex<N>&a = bin.vertex(ia, post), &b = bin.vertex(ib, post), &c = bin.vertex(ic, post);
-        const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
-        if (!survives_culling(area2, faces)) return;
-        add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, a, b, c, pixel_bounds(a, b, c, samples), area2);
+    bin_pending(bin, indices.size() / 3, [&] {  // (most triangles touch one tile)
+        assemble_triangles(indices, post, planes, vp, flat, bin.clipped, [&](uint32_t ia, uint32_t ib, uint32_t ic) {
+            const ShadedVertex<N>&a = bin.vertex(ia, post), &b = bin.vertex(ib, post), &c = bin.vertex(ic, post);
+            const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
+            if (!survives_culling(area2, faces)) return;
+            add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, a, b, c, pixel_bounds(a, b, c, samples), area2);
+        });
     });
-    group_by_tile(bin);
-    bin.pending.swap(scratch);
-    if (scratch.capacity() > kKeptPending) scratch = {};
 }
 
 }  // namespace softraster

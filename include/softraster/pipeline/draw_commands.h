@@ -250,10 +250,10 @@ public:
         const std::span<const uint32_t> chunk = indices_.subspan(begin * kPer, (end - begin) * kPer);
         const FlatVaryings flat{kFlatVaryings<S>, state_.provoking_vertex == ProvokingVertex::First};
         if constexpr (T == Topology::Triangles) {
-            phases::bin_triangles(chunk, post_.data(), target, sample_extent<BinSamples>(), FaceState{state_.cull, state_.front_face}, flat, bins()[c]);
+            phases::bin_triangles(chunk, post_.data(), target, sample_extent<BinSamples>(), FaceState{state_.cull, state_.front_face}, flat, bin(c));
         } else {
             const LinePointShape shape{state_.line_width, state_.point_size, target.fb->samples() > 1, state_.front_face};
-            bin_lines_points(T, chunk, post_.data(), target.planes, target.viewport, sample_extent<BinSamples>(), shape, flat, target.grid, bins()[c]);
+            bin_lines_points(T, chunk, post_.data(), target.planes, target.viewport, sample_extent<BinSamples>(), shape, flat, target.grid, bin(c));
         }
     }
     void finish_binning(const TileGrid& grid) override { sum_bins<N>(bins(), grid); }
@@ -262,10 +262,7 @@ protected:
     BinnedTriangles<N> triangles() const { return {bins(), post_.data()}; }
     // The chunks' bins: a draw of one chunk (most draws: up to kTriangleChunk triangles)
     // keeps its bin inline, an allocation fewer per draw.
-    std::span<TriangleBin<N>> bins() {
-        if (!bins_.empty()) return bins_;
-        return {&one_bin_, primitive_chunks() == 1 ? size_t(1) : size_t(0)};
-    }
+    TriangleBin<N>& bin(size_t c) { return bins_.empty() ? one_bin_ : bins_[c]; }
     std::span<const TriangleBin<N>> bins() const {
         if (!bins_.empty()) return bins_;
         return {&one_bin_, primitive_chunks() == 1 ? size_t(1) : size_t(0)};

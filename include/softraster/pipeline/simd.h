@@ -206,6 +206,9 @@ inline i8 quantize_unorm8(f8 x) { return to_int(clamp01(x) * 255.0f + 0.5f); }
 struct vec3x8 {
     f8 x, y, z;
 };
+// A three-component vector (glm::vec3) in every lane.
+template <class V>
+inline vec3x8 splat3(const V& v) { return {splat(v.x), splat(v.y), splat(v.z)}; }
 inline f8 dot(const vec3x8& a, const vec3x8& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline vec3x8 normalize(const vec3x8& v) {
     const f8 inv = 1.0f / sqrt(dot(v, v));

@@ -188,8 +188,7 @@ inline simd::vec3x8 diffuse_intensity(const LightSet& lights, const simd::vec3x8
         if constexpr (Shadowed) {
             light_color(lights, i, vis, c);
         } else {
-            const glm::vec3& color = lights.color[size_t(i)];
-            c = {splat(color.x), splat(color.y), splat(color.z)};
+            c = simd::splat3(lights.color[size_t(i)]);
         }
         const simd::f8 nl = simd::max(splat(0.0f), n.x * l.x + n.y * l.y + n.z * l.z);
         sum.x += c.x * nl;
@@ -225,7 +224,7 @@ inline simd::vec3x8 specular_term(const LightSet& lights, const simd::vec3x8& n,
         const simd::f8 nl = n.x * l.x + n.y * l.y + n.z * l.z;
         const simd::i8 lit = nl > 0.0f;
         if (!simd::any(lit)) continue;
-        const simd::vec3x8 lv{splat(l.x), splat(l.y), splat(l.z)};
+        const simd::vec3x8 lv = simd::splat3(l);
         const simd::f8 p = simd::select(lit, specular_factor<Sp>(n, lv, to_eye, nl, shininess), splat(0.0f));
         sum.x += k.x * p;
         sum.y += k.y * p;

@@ -184,7 +184,7 @@ struct SurfaceShader {
     simd::vec3x8 pbr_rgb8(const std::array<simd::f8, kVaryingCount<Varyings>>& in, const std::array<simd::f8, 4>& base) const {
         using namespace simd;
         f8 metallic = splat(u->metallic), roughness = splat(u->roughness), occlusion = splat(1.0f);
-        vec3x8 emissive{splat(u->emissive.x), splat(u->emissive.y), splat(u->emissive.z)};
+        vec3x8 emissive = splat3(u->emissive);
         if constexpr (Varyings::kUv) {
             constexpr size_t d = Varyings::kUvDerivativesAt;
             const std::array<f8, 4> dd{in[d], in[d + 1], in[d + 2], in[d + 3]};
@@ -229,7 +229,7 @@ struct SurfaceShader {
             const glm::vec3 l = u->lights.to_light[size_t(i)];
             vec3x8 c;
             light_color(u->lights, i, vis, c);
-            add(c, {splat(l.x), splat(l.y), splat(l.z)});
+            add(c, splat3(l));
         }
         for (int i = 0; i < u->lights.positional_count; ++i) {
             vec3x8 l;
@@ -259,7 +259,7 @@ struct SurfaceShader {
     BatchConstants batch_constants() const {
         using simd::splat;
         return {{splat(u->color.r), splat(u->color.g), splat(u->color.b), splat(u->color.a)},
-                {splat(u->lights.ambient.x), splat(u->lights.ambient.y), splat(u->lights.ambient.z)},
+                simd::splat3(u->lights.ambient),
                 u->tone_mapping.active()};
     }
 
