@@ -60,7 +60,7 @@ inline void blend_row_body(const BlendSettings& b, Rgba8* row, int width, const 
 #pragma GCC diagnostic pop
 #endif
 
-template <bool Blended>
+template <bool Wide, bool Blended>
 inline void merge_groups(const BlendSettings& settings, Framebuffer& fb, const GroupPlaces& p, const simd::i8* pass) {
     // Locals, not references: a color store may alias anything a reference reaches, which
     // would then be loaded again for every group.
@@ -69,7 +69,21 @@ inline void merge_groups(const BlendSettings& settings, Framebuffer& fb, const G
     Rgba8* const color = fb.color_data();
     const size_t row_stride = fb.sample_index(0, 1);
     auto color_row = [&](int y) { return color + size_t(y) * row_stride; };
-    if constexpr (Blended) {
+    if constexpr (!Blended) {
+        // Opaque: each group's pixels as the framebuffer stores them, the color space chosen
+        // once per batch rather than per group.
+        auto write = [&](ColorSpace space) {
+            for (int g = 0; g < count; ++g) {
+                simd::i8 packed;
+                quantize_pack_rgba8<Wide>(p.rgba[g], space, packed);
+                Rgba8* const row = color_row(p.y[g]);
+                simd::store_group(row, p.x[g], width, simd::select(pass[g], packed, simd::load_group<simd::i8>(row, p.x[g], width)));
+            }
+        };
+        if (blend.color_space == ColorSpace::Linear) write(ColorSpace::Linear);
+        else write(ColorSpace::Srgb);
+        return;
+    } else {
         if (blend.mode == BlendMode::Custom) {
             RowGroups row;
             int row_y = -1;
@@ -78,14 +92,14 @@ inline void merge_groups(const BlendSettings& settings, Framebuffer& fb, const G
                     blend_row_body(blend, color_row(row_y), width, row), row.count = 0;
                 row_y = p.y[g];
                 simd::i8 packed;
-                quantize_pack_rgba8(p.rgba[g], packed);
+                quantize_pack_rgba8<Wide>(p.rgba[g], packed);
                 row.add(p.x[g], pass[g], packed);
             }
             if (row.count > 0) blend_row_body(blend, color_row(row_y), width, row);
             return;
         }
+        for (int g = 0; g < count; ++g) blend_group<Blended>(blend, color_row(p.y[g]), p.x[g], width, pass[g], p.rgba[g]);
     }
-    for (int g = 0; g < count; ++g) blend_group<Blended>(blend, color_row(p.y[g]), p.x[g], width, pass[g], p.rgba[g]);
 }
 
 }  // namespace
@@ -97,11 +111,11 @@ void blend_row_generic(const BlendSettings& b, Rgba8* row, int width, const RowG
 
 template <bool Blended>
 SOFTRASTER_AVX2_TARGET void merge_groups_wide(const BlendSettings& blend, Framebuffer& fb, const GroupPlaces& p, const simd::i8* pass) {
-    merge_groups<Blended>(blend, fb, p, pass);
+    merge_groups<SOFTRASTER_HAS_AVX2_PATH, Blended>(blend, fb, p, pass);
 }
 template <bool Blended>
 void merge_groups_generic(const BlendSettings& blend, Framebuffer& fb, const GroupPlaces& p, const simd::i8* pass) {
-    merge_groups<Blended>(blend, fb, p, pass);
+    merge_groups<false, Blended>(blend, fb, p, pass);
 }
 template void merge_groups_wide<false>(const BlendSettings&, Framebuffer&, const GroupPlaces&, const simd::i8*);
 template void merge_groups_wide<true>(const BlendSettings&, Framebuffer&, const GroupPlaces&, const simd::i8*);

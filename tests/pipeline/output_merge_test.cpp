@@ -126,6 +126,39 @@ TEST(Quantize, RoundsHalfUpAndClamps) {
     EXPECT_EQ(quantize_unorm8(1.0f / 255.0f), 1);
 }
 
+// Eight lanes quantized and packed (quantize_pack_rgba8) give each lane's quantize_unorm8, in
+// the generic copy and in the AVX2 one, whose clamps are folded into the conversion and the
+// saturating packs: values in and far out of [0, 1], the rounding edges, signed zeros,
+// infinities and NaN.
+TEST(Quantize, PackedLanesEqualOneAtATimeOnBothPaths) {
+    std::vector<float> values = {0.0f, -0.0f, 1.0f, 0.5f, -0.1f, 1.7f, NAN, -NAN, INFINITY, -INFINITY, 3.0e9f, -3.0e9f, 1.0e38f, -1.0e38f,
+                                 1.0f / 255.0f, 0.5f / 255.0f, std::nextafter(0.5f / 255.0f, 0.0f), std::nextafter(1.0f, 2.0f),
+                                 std::nextafter(1.0f, 0.0f), 1.0e-30f, -1.0e-30f};
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> c(-0.5f, 1.5f);
+    while (values.size() % 8 != 0 || values.size() < 4000) values.push_back(c(rng));
+    std::uniform_int_distribution<size_t> pick(0, values.size() - 1);
+    for (int trial = 0; trial < 4000; ++trial) {
+        std::array<simd::f8, 4> src;
+        uint32_t expected[8];
+        for (int l = 0; l < simd::kLanes; ++l) {
+            for (auto& ch : src) ch[l] = trial < int(values.size()) / 8 ? values[size_t(8 * trial + l)] : values[pick(rng)];
+            const Rgba8 p{quantize_unorm8(src[0][l]), quantize_unorm8(src[1][l]), quantize_unorm8(src[2][l]), quantize_unorm8(src[3][l])};
+            std::memcpy(&expected[l], &p, 4);
+        }
+        simd::i8 generic;
+        quantize_pack_rgba8<false>(src, generic);
+        ASSERT_EQ(std::memcmp(&generic, expected, sizeof expected), 0) << "generic, trial " << trial;
+#if SOFTRASTER_HAS_AVX2_PATH
+        if (simd::wide_path_runs()) {
+            simd::i8 wide;
+            quantize_pack_rgba8<true>(src, wide);
+            ASSERT_EQ(std::memcmp(&wide, expected, sizeof expected), 0) << "AVX2, trial " << trial;
+        }
+#endif
+    }
+}
+
 // Eight pixels at a time (blend_group; blend_row for Custom) give the same bytes as one at
 // a time (blend), for every mode, lanes written or not, colors in and out of [0, 1] and NaN.
 TEST(Blend, EightLanesEqualOneAtATime) {

@@ -142,7 +142,7 @@ private:
         for (int g = 0; g < b.count; ++g) {
             const int first = g * kLanes, n = std::min(kLanes, count - first);
             i8 packed;
-            quantize_pack_rgba8(b.rgba[g], color_space_, packed);
+            quantize_pack_rgba8<SOFTRASTER_HAS_AVX2_PATH>(b.rgba[g], color_space_, packed);  // (the queue runs in the AVX2 copy only)
             for (int l = 0; l < n; ++l) {
                 const size_t slot = size_t(first + l);
                 Rgba8 c;

@@ -27,6 +27,10 @@
 #include "softraster/pipeline/simd.h"
 #include "softraster/render_state.h"
 
+#if SOFTRASTER_HAS_AVX2_PATH
+#include <immintrin.h>
+#endif
+
 namespace softraster {
 
 // x * y / 255 for 8-bit x, y, rounded to nearest: the exact unorm8 product that GPUs and
@@ -220,14 +224,32 @@ inline void merge_fragment(const BlendSettings& b, Rgba8* color, unsigned mask, 
 // Eight colors (r, g, b, a lanes) quantized to 8 bits per channel, packed as Rgba8. (The
 // result by reference: a 32-byte vector returned by value crosses the AVX2 and generic
 // copies' different calling conventions when the helper is not inlined, as in the
-// sanitizer builds.)
+// sanitizer builds.) Wide: in the AVX2 copy, below.
+template <bool Wide = false>
 inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, simd::i8& out) {
     using simd::quantize_unorm8;
     out = quantize_unorm8(c[0]) | (quantize_unorm8(c[1]) << 8) | (quantize_unorm8(c[2]) << 16) | (quantize_unorm8(c[3]) << 24);
 }
+#if SOFTRASTER_HAS_AVX2_PATH
+// The same numbers with the clamps folded into the conversion: min(1, x) keeps a NaN (the
+// second operand wins), x 255 + 0.5 truncates, and the packs saturate to 0..255, which is
+// where a NaN (converted to INT_MIN), a negative x and clamp01's 0 all end. The packs leave
+// each 128-bit half as r0..r3 g0..g3 b0..b3 a0..a3, and one byte shuffle makes pixels of it.
+// Fewer instructions than clamping each channel first (docs/performance.md).
+template <>
+[[gnu::target("avx2")]] inline void quantize_pack_rgba8<true>(const std::array<simd::f8, 4>& c, simd::i8& out) {
+    const __m256 one = _mm256_set1_ps(1.0f), scale = _mm256_set1_ps(255.0f), half = _mm256_set1_ps(0.5f);
+    __m256i q[4];
+    for (size_t k = 0; k < 4; ++k) q[k] = _mm256_cvttps_epi32(_mm256_add_ps(_mm256_mul_ps(_mm256_min_ps(one, __m256(c[k])), scale), half));
+    const __m256i bytes = _mm256_packus_epi16(_mm256_packs_epi32(q[0], q[1]), _mm256_packs_epi32(q[2], q[3]));
+    const __m256i to_pixels = _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
+    out = simd::i8(_mm256_shuffle_epi8(bytes, to_pixels));
+}
+#endif
 // The same as a framebuffer of that color space stores them (sRGB: r, g, b encoded).
+template <bool Wide = false>
 inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace space, simd::i8& out) {
-    if (space == ColorSpace::Linear) return quantize_pack_rgba8(c, out);
+    if (space == ColorSpace::Linear) return quantize_pack_rgba8<Wide>(c, out);
     simd::i8 r, g, b;
     srgb::encode(c[0], r), srgb::encode(c[1], g), srgb::encode(c[2], b);
     out = r | (g << 8) | (b << 16) | (simd::quantize_unorm8(c[3]) << 24);
