@@ -19,7 +19,7 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         f8 weight = splat(0.0f), axis_u = splat(0.0f), axis_v = splat(0.0f);
         if (s.uses_lod()) {
             f8 rx, ry;
-            footprint_axes8(d, float(width()), float(height()), rx, ry);
+            footprint_axes8(d.data(), float(width()), float(height()), rx, ry);
             f8 rho2 = select(rx > ry, rx, ry);
             const i8 minified = rho2 > 1.0f;
             nearest = select(minified, splat_i(s.min == Filter::Nearest ? -1 : 0), nearest);
@@ -206,11 +206,17 @@ void Texture::sample_quad_rows(const f8& u0, const f8& v0, const f8& u1, const f
     sample8(u1, v1, d1, s, rgba1);
 }
 
-void Texture::sample_quad_block(const f8 (&u)[4], const f8 (&v)[4], const std::array<f8, 4> (&d)[4], const Sampler& s,
-                                std::array<f8, 4> (&rgba)[4]) const {
-    if (uniform_lookup(pot_, s) && !srgb_ && lanes::sample_uniform_block(pot_levels(), u, v, d, s.mip, rgba)) return;
-    sample_quad_rows(u[0], v[0], u[1], v[1], d[0], d[1], s, rgba[0], rgba[1]);
-    sample_quad_rows(u[2], v[2], u[3], v[3], d[2], d[3], s, rgba[2], rgba[3]);
+// The four groups as two pairs, out of line: inlined, the copies of their derivatives were
+// made ahead of the common lookup, on every call.
+[[gnu::noinline]] static void sample_quad_block_by_pairs(const Texture& t, const f8* const (&uv)[4], const Sampler& s, std::array<f8, 4> (&rgba)[4]) {
+    const auto d = [&](int g) { return std::array<f8, 4>{uv[g][2], uv[g][3], uv[g][4], uv[g][5]}; };
+    t.sample_quad_rows(uv[0][0], uv[0][1], uv[1][0], uv[1][1], d(0), d(1), s, rgba[0], rgba[1]);
+    t.sample_quad_rows(uv[2][0], uv[2][1], uv[3][0], uv[3][1], d(2), d(3), s, rgba[2], rgba[3]);
+}
+
+void Texture::sample_quad_block(const f8* const (&uv)[4], const Sampler& s, std::array<f8, 4> (&rgba)[4]) const {
+    if (uniform_lookup(pot_, s) && !srgb_ && lanes::sample_uniform_block(pot_levels(), uv, s.mip, rgba)) return;
+    sample_quad_block_by_pairs(*this, uv, s, rgba);
 }
 
 lanes::PotLevels Texture::pot_levels() const {

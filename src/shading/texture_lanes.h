@@ -166,7 +166,8 @@ template <>
 // select_lod on eight lanes, in two steps (anisotropic filtering shortens the footprint
 // between them). First the squared lengths of the footprint's x and y axes, in texels of
 // level 0 ...
-inline void footprint_axes8(const std::array<f8, 4>& d, float w, float h, f8& rx, f8& ry) {
+// (d: du/dx, dv/dx, du/dy, dv/dy, four vectors in a row.)
+inline void footprint_axes8(const f8* d, float w, float h, f8& rx, f8& ry) {
     const f8 ax = d[0] * w, bx = d[1] * h, ay = d[2] * w, by = d[3] * h;
     rx = ax * ax + bx * bx, ry = ay * ay + by * by;
 }
@@ -312,8 +313,7 @@ bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f
 // Four groups' lookups (Texture::sample_quad_block), linear textures only: false (rgba
 // untouched) unless groups 0 and 1 have the same derivatives, 2 and 3 too, and all 32 lanes
 // take the same level(s).
-bool sample_uniform_block(const PotLevels& t, const f8 (&u)[4], const f8 (&v)[4], const std::array<f8, 4> (&d)[4], MipFilter mip,
-                          std::array<f8, 4> (&rgba)[4]);
+bool sample_uniform_block(const PotLevels& t, const f8* const (&uv)[4], MipFilter mip, std::array<f8, 4> (&rgba)[4]);
 bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba);
 
 }  // namespace softraster::lanes

@@ -58,7 +58,7 @@ struct UniformLevels {
     f8 weight;
 };
 template <bool Wide>
-inline bool uniform_levels(const PotLevels& t, const std::array<f8, 4>& d, MipFilter mip, UniformLevels& out) {
+inline bool uniform_levels(const PotLevels& t, const f8* d, MipFilter mip, UniformLevels& out) {
     using simd::splat, simd::splat_i;
     LaneLod lod{splat_i(0), splat_i(0), splat(0.0f)};
     if (mip != MipFilter::None) {
@@ -111,12 +111,12 @@ inline i8 fixed_point(const f8& u, float side) {
 // is a long chain of dependent steps; side by side, they overlap), and one call's fixed costs
 // (the level of detail, the level's numbers, the call itself) serve all G groups.
 template <bool Wide, int G, int D>
-inline bool sample_uniform_linear(const PotLevels& t, const f8 (&u)[G], const f8 (&v)[G], const std::array<f8, 4>* const (&d)[D], MipFilter mip,
+inline bool sample_uniform_linear(const PotLevels& t, const f8* const (&u)[G], const f8* const (&v)[G], const f8* const (&d)[D], MipFilter mip,
                                   std::array<f8, 4>* const (&rgba)[G]) {
     static_assert(G % D == 0);
     using simd::to_int;
     i8 fu[G], fv[G];
-    for (int g = 0; g < G; ++g) fu[g] = fixed_point<Wide>(u[g], t.w), fv[g] = fixed_point<Wide>(v[g], t.h);
+    for (int g = 0; g < G; ++g) fu[g] = fixed_point<Wide>(*u[g], t.w), fv[g] = fixed_point<Wide>(*v[g], t.h);
     LevelPoint p[G][2];  // [group][first or second level]
     i8 texel[G][2][4];
     UniformLevels l[D], all;
@@ -128,7 +128,7 @@ inline bool sample_uniform_linear(const PotLevels& t, const f8 (&u)[G], const f8
         for (int g = 0; g < G; ++g)
             for (int k = 0; k < levels; ++k) load_footprints<Wide>(t.texels, p[g][k].index, texel[g][k]);
         for (int k = 0; k < D; ++k)
-            if (!uniform_levels<Wide>(t, *d[k], mip, l[k]) || l[k].level != l[0].level) return false;
+            if (!uniform_levels<Wide>(t, d[k], mip, l[k]) || l[k].level != l[0].level) return false;
         all = l[0];
         for (int k = 1; k < D; ++k) all.two = all.two || l[k].two;  // (a set without a second level blends it by 0: exact)
         if (all.level + (all.two ? 1 : 0) >= 16) return false;
@@ -167,7 +167,7 @@ inline void srgb_level(const PotLevels& t, const uint32_t* decode, const f8& ur,
 template <bool Wide>
 inline bool sample_uniform_srgb(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
     UniformLevels l;
-    if (!uniform_levels<Wide>(t, d, mip, l)) return false;
+    if (!uniform_levels<Wide>(t, d.data(), mip, l)) return false;
     const f8 ur = reduce8<Wide>(u, Wrap::Repeat), vr = reduce8<Wide>(v, Wrap::Repeat);
     const uint32_t* decode = reinterpret_cast<const uint32_t*>(srgb::tables().decode.data());
     srgb_level<Wide>(t, decode, ur, vr, l.level, rgba);
@@ -184,7 +184,7 @@ inline bool sample_uniform_srgb(const PotLevels& t, const f8& u, const f8& v, co
 // Whether two groups' derivatives are the same (the same quads'); where not, each group
 // takes its own level of detail.
 template <bool Wide>
-inline bool same_quads(const std::array<f8, 4>& d0, const std::array<f8, 4>& d1) {
+inline bool same_quads(const f8* d0, const f8* d1) {
     return !simd::any((d0[0] != d1[0]) | (d0[1] != d1[1]) | (d0[2] != d1[2]) | (d0[3] != d1[3]));
 }
 
@@ -193,19 +193,22 @@ bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f
     // (All of it in the lambda, the CPU path's own copy: vectors compared or copied outside it
     // would be compiled without AVX, lane by lane.)
     return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() {
-        if (!same_quads<Wide>(d0, d1)) return false;
-        const f8 u[2] = {u0, u1}, v[2] = {v0, v1};
-        const std::array<f8, 4>* const d[1] = {&d0};
+        if (!same_quads<Wide>(d0.data(), d1.data())) return false;
+        const f8* const u[2] = {&u0, &u1};
+        const f8* const v[2] = {&v0, &v1};
+        const f8* const d[1] = {d0.data()};
         std::array<f8, 4>* const rgba[2] = {&rgba0, &rgba1};
         return sample_uniform_linear<Wide, 2, 1>(t, u, v, d, mip, rgba);
     });
 }
 
-bool sample_uniform_block(const PotLevels& t, const f8 (&u)[4], const f8 (&v)[4], const std::array<f8, 4> (&d)[4], MipFilter mip,
-                          std::array<f8, 4> (&rgba)[4]) {
+bool sample_uniform_block(const PotLevels& t, const f8* const (&uv)[4], MipFilter mip, std::array<f8, 4> (&rgba)[4]) {
     return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() {
+        const f8* const d[4] = {uv[0] + 2, uv[1] + 2, uv[2] + 2, uv[3] + 2};
         if (!same_quads<Wide>(d[0], d[1]) || !same_quads<Wide>(d[2], d[3])) return false;
-        const std::array<f8, 4>* const pairs[2] = {&d[0], &d[2]};
+        const f8* const u[4] = {uv[0], uv[1], uv[2], uv[3]};
+        const f8* const v[4] = {uv[0] + 1, uv[1] + 1, uv[2] + 1, uv[3] + 1};
+        const f8* const pairs[2] = {d[0], d[2]};
         std::array<f8, 4>* const out[4] = {&rgba[0], &rgba[1], &rgba[2], &rgba[3]};
         return sample_uniform_linear<Wide, 4, 2>(t, u, v, pairs, mip, out);
     });
@@ -214,8 +217,9 @@ bool sample_uniform_block(const PotLevels& t, const f8 (&u)[4], const f8 (&v)[4]
 bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
     if (srgb) return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() { return sample_uniform_srgb<Wide>(t, u, v, d, mip, rgba); });
     return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() {
-        const f8 uu[1] = {u}, vv[1] = {v};
-        const std::array<f8, 4>* const dd[1] = {&d};
+        const f8* const uu[1] = {&u};
+        const f8* const vv[1] = {&v};
+        const f8* const dd[1] = {d.data()};
         std::array<f8, 4>* const out[1] = {&rgba};
         return sample_uniform_linear<Wide, 1, 1>(t, uu, vv, dd, mip, out);
     });

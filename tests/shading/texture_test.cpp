@@ -521,7 +521,10 @@ TEST(Texture, QuadBlockLookupsEqualEightAtATime) {
         d[1] = d[0], d[3] = d[2];
         if (trial % 5 == 0) d[3][1] = d[3][1] * 1.5f;  // (not the same quads)
         std::array<simd::f8, 4> got[4], want[4];
-        t.sample_quad_block(u, v, d, s, got);
+        std::array<simd::f8, 6> in[4];  // (u, v, d in a row, as a shader's varyings hold them)
+        for (size_t g = 0; g < 4; ++g) in[g] = {u[g], v[g], d[g][0], d[g][1], d[g][2], d[g][3]};
+        const simd::f8* const at[4] = {in[0].data(), in[1].data(), in[2].data(), in[3].data()};
+        t.sample_quad_block(at, s, got);
         for (int g = 0; g < 4; ++g) t.sample8(u[g], v[g], d[g], s, want[g]);
         for (int g = 0; g < 4; ++g) expect_same_lookups(got[g], want[g], what + " group " + std::to_string(g));
     });

@@ -301,10 +301,10 @@ struct SurfaceShader {
     void fragment_quad_block(const Batch (&in)[4], const simd::f8 (&z)[4], bool, std::array<simd::f8, 4> (&out)[4]) const
         requires(Varyings::kUv && Model != Shading::Pbr) {
         std::array<simd::f8, 4> tex[4];  // (not PBR: the texture is always there)
-        const simd::f8 uu[4] = {in[0][Varyings::kUvAt], in[1][Varyings::kUvAt], in[2][Varyings::kUvAt], in[3][Varyings::kUvAt]};
-        const simd::f8 vv[4] = {in[0][Varyings::kUvAt + 1], in[1][Varyings::kUvAt + 1], in[2][Varyings::kUvAt + 1], in[3][Varyings::kUvAt + 1]};
-        const std::array<simd::f8, 4> d[4] = {uv_derivatives(in[0]), uv_derivatives(in[1]), uv_derivatives(in[2]), uv_derivatives(in[3])};
-        u->texture->sample_quad_block(uu, vv, d, u->sampler, tex);
+        static_assert(Varyings::kUvDerivativesAt == Varyings::kUvAt + 2, "u, v and their derivatives in a row, as the lookup reads them");
+        constexpr size_t uv = Varyings::kUvAt;
+        const simd::f8* const at[4] = {&in[0][uv], &in[1][uv], &in[2][uv], &in[3][uv]};
+        u->texture->sample_quad_block(at, u->sampler, tex);
         const BatchConstants k = batch_constants();
         for (size_t g = 0; g < 4; ++g) shade_batch(k, in[g], z[g], &tex[g], out[g]);
     }

@@ -138,10 +138,12 @@ public:
                           const std::array<simd::f8, 4>& d1, const Sampler& s, std::array<simd::f8, 4>& rgba0, std::array<simd::f8, 4>& rgba1) const;
 
     // The lookups of four groups of eight: two neighbouring pairs as sample_quad_rows takes
-    // them, (u, v, d)[0] and [1] one pair's rows, [2] and [3] the other's. Each as sample8
-    // computes it; faster than two pairs, as one call's fixed costs serve all four.
-    void sample_quad_block(const simd::f8 (&u)[4], const simd::f8 (&v)[4], const std::array<simd::f8, 4> (&d)[4], const Sampler& s,
-                           std::array<simd::f8, 4> (&rgba)[4]) const;
+    // them, groups 0 and 1 one pair's rows, 2 and 3 the other's. Each as sample8 computes it;
+    // faster than two pairs, as one call's fixed costs serve all four. Group g's numbers are
+    // read where they lie, six vectors in a row from uv[g]: u, v and the derivatives (du/dx,
+    // dv/dx, du/dy, dv/dy), as a shader's varyings hold them (SurfaceShader's Varyings), so
+    // that the shader need not copy 24 vectors into a call's arguments.
+    void sample_quad_block(const simd::f8* const (&uv)[4], const Sampler& s, std::array<simd::f8, 4> (&rgba)[4]) const;
 
     LevelChoice select_lod(const UvDerivatives& d, const Sampler& s) const;
 
