@@ -17,7 +17,10 @@ float float_at_or_above(double x) {
 
 Tables make_tables() {
     Tables t{};
-    for (int k = 0; k < 256; ++k) t.decode[size_t(k)] = float(decode_exact(k / 255.0));
+    for (int k = 0; k < 256; ++k) {
+        t.decode[size_t(k)] = float(decode_exact(k / 255.0));
+        t.decode_fixed[size_t(k)] = uint16_t(std::lround(65280.0 * decode_exact(k / 255.0)));
+    }
     t.threshold[0] = -std::numeric_limits<float>::infinity();
     t.threshold[256] = std::numeric_limits<float>::infinity();
     for (int k = 1; k < 256; ++k) t.threshold[size_t(k)] = float_at_or_above(decode_exact((k - 0.5) / 255.0));

@@ -15,6 +15,10 @@
 
 #include "softraster/pipeline/simd.h"
 
+#if SOFTRASTER_HAS_AVX2_PATH
+#include <immintrin.h>
+#endif
+
 namespace softraster {
 // How stored 8-bit color values relate to light (a texture's or a framebuffer's format):
 // linear (GL_RGBA8) or sRGB-encoded (GL_SRGB8_ALPHA8).
@@ -25,6 +29,9 @@ namespace softraster::srgb {
 
 struct Tables {
     std::array<float, 256> decode;     // decode(k / 255), in double then rounded
+    // decode(k / 255) on the texture filter's fixed-point scale (texture.h "Precision"):
+    // round(65280 decode(k / 255)), 0 to 65280.
+    std::array<uint16_t, 256> decode_fixed;
     std::array<float, 257> threshold;  // [k]: the least float >= t_k; [0] = -inf, [256] = +inf
     // The stored value at the start of each of 13 x 128 intervals of [2^-13, 1): float bit
     // patterns >> 16 (exponent and 7 bits of mantissa) from that of 2^-13. No interval
@@ -63,5 +70,17 @@ inline void encode(const simd::f8& linear, simd::i8& out) {
         out[lane] = l[lane] >= t.threshold[size_t(k) + 1] ? k + 1 : k;
     }
 }
+#if SOFTRASTER_HAS_AVX2_PATH
+// The same with two gathers for the lanes' table lookups (t: tables(), read once by the
+// caller for its channels). max(l, 0) takes the second operand, 0, for a NaN, as clamp01.
+[[gnu::target("avx2")]] inline void encode_avx2(const Tables& t, const simd::f8& linear, simd::i8& out) {
+    const __m256 l = _mm256_min_ps(_mm256_max_ps(__m256(linear), _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
+    __m256i b = _mm256_sub_epi32(_mm256_srli_epi32(_mm256_castps_si256(l), 16), _mm256_set1_epi32(Tables::kFirstBucket));
+    b = _mm256_min_epi32(_mm256_max_epi32(b, _mm256_setzero_si256()), _mm256_set1_epi32(Tables::kBuckets - 1));
+    const __m256i k = _mm256_i32gather_epi32(t.bucket_start.data(), b, 4);
+    const __m256 next = _mm256_i32gather_ps(t.threshold.data() + 1, k, 4);
+    out = simd::i8(_mm256_sub_epi32(k, _mm256_castps_si256(_mm256_cmp_ps(l, next, _CMP_GE_OQ))));  // (a true comparison is -1)
+}
+#endif
 
 }  // namespace softraster::srgb

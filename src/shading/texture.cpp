@@ -119,6 +119,17 @@ Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpa
                         tile[y * kTileSide + x] = uint32_t(t.r) | uint32_t(t.g) << 8 | uint32_t(t.b) << 16 | uint32_t(t.a) << 24;
                     }
     }
+    if (srgb_) {  // the same places, decoded onto the fixed-point scale (fixed_texels)
+        fixed_storage_.assign(size_t(offset) + 7, 0u);
+        fixed_aligned_ = (64 - reinterpret_cast<uintptr_t>(fixed_storage_.data()) % 64) % 64 / sizeof(uint64_t);
+        const std::array<uint16_t, 256>& decode = srgb::tables().decode_fixed;
+        uint64_t* fixed = fixed_storage_.data() + fixed_aligned_;
+        for (size_t k = 0; k < size_t(offset); ++k) {
+            const uint32_t t = out[k];
+            fixed[k] = uint64_t(decode[t & 255u]) | uint64_t(decode[(t >> 8) & 255u]) << 16 | uint64_t(decode[(t >> 16) & 255u]) << 32 |
+                       uint64_t(t >> 24) << 56;  // (alpha: 256 a)
+        }
+    }
 }
 
 // The level of detail as llvmpipe computes it (Mesa's lp_bld_sample.c with its default
@@ -180,40 +191,48 @@ glm::vec4 Texture::sample_level(int level, glm::vec2 uv, const Sampler& s) const
     }
 }
 
-// The fixed-point lookup (texture.h "Precision"): the sample point in 1/256 texel steps,
-//   x = floor(256 (u w)) - 128   (bilinear: texel i's center is at i + 0.5; nearest: - 0)
+// The fixed-point lookup (texture.h "Precision"): the sample point in 1/2^n texel steps
+// (n = fraction_bits: 8, or 12 for sRGB),
+//   x = floor(2^n (u w)) - 2^(n-1)   (bilinear: texel i's center is at i + 0.5; nearest: - 0)
 // with u w rounded to a float once, so that on a power-of-two texture, where u w is exact,
 // each level's x is level 0's shifted right (sample_lanes). Then per channel, with texels
-// a, b below and c, d above (b, d to the right) and weights fx, fy in 0..255:
-//   bottom = 256 a + (b - a) fx,  top = 256 c + (d - c) fx     (exact, 0..65280)
-//   value  = bottom - (bottom fy >> 8) + (top fy >> 8)          (0..65280)
-// The last line is how sixteen-bit lanes compute bottom + (top - bottom) fy / 256 with two
-// high-half products (sample_lanes); it stays within 0..65280.
+// a, b below and c, d above (b, d to the right) on the scale 0..65280 (256 times an 8-bit
+// value; an sRGB texel's r, g, b decoded, srgb::Tables::decode_fixed) and weights fx, fy in
+// 0..2^n - 1:
+//   bottom = a - (a fx >> n) + (b fx >> n),  top = c - (c fx >> n) + (d fx >> n)
+//   value  = bottom - (bottom fy >> n) + (top fy >> n)          (0..65280)
+// For a linear texture, a = 256 a8, the rows are exact: 256 a8 + (b8 - a8) fx. Each line is
+// how sixteen-bit lanes compute p + (q - p) w / 2^n with two high-half products
+// (sample_lanes); it stays within 0..65280.
 template <Filter F>
 glm::ivec4 Texture::sample_level_fixed(int level, glm::vec2 uv, const Sampler& s) const {
     const Level& l = levels_[size_t(level)];
-    const int half = F == Filter::Nearest ? 0 : 128;
-    const int x = detail::floor_to_int(detail::reduce(uv.x, s.wrap_s) * float(l.width) * 256.0f) - half;
-    const int y = detail::floor_to_int(detail::reduce(uv.y, s.wrap_t) * float(l.height) * 256.0f) - half;
-    const int fx = F == Filter::Nearest ? 0 : x & 255, fy = F == Filter::Nearest ? 0 : y & 255;
-    const Footprint f = footprint(x >> 8, y >> 8, l.width, l.height, s);
+    const int bits = fraction_bits(srgb_), one = 1 << bits, half = F == Filter::Nearest ? 0 : one / 2;
+    const int x = detail::floor_bounded(detail::reduce(uv.x, s.wrap_s) * float(l.width) * float(one)) - half;
+    const int y = detail::floor_bounded(detail::reduce(uv.y, s.wrap_t) * float(l.height) * float(one)) - half;
+    const int fx = F == Filter::Nearest ? 0 : x & (one - 1), fy = F == Filter::Nearest ? 0 : y & (one - 1);
+    const Footprint f = footprint(x >> bits, y >> bits, l.width, l.height, s);
     const uint32_t a = texels()[texel_index(l, f.ia, f.ja)], b = texels()[texel_index(l, f.ib, f.ja)];
     const uint32_t c = texels()[texel_index(l, f.ia, f.jb)], d = texels()[texel_index(l, f.ib, f.jb)];
+    const std::array<uint16_t, 256>& decode = srgb::tables().decode_fixed;
+    auto blend = [bits](int p, int q, int w) { return p - ((p * w) >> bits) + ((q * w) >> bits); };
     glm::ivec4 r;
     for (int k = 0; k < 4; ++k) {
-        auto channel = [k](uint32_t t) { return int((t >> (8 * k)) & 255u); };
-        const int bottom = channel(a) * 256 + (channel(b) - channel(a)) * fx, top = channel(c) * 256 + (channel(d) - channel(c)) * fx;
-        r[k] = bottom - ((bottom * fy) >> 8) + ((top * fy) >> 8);
+        auto channel = [&](uint32_t t) {
+            const uint32_t byte = (t >> (8 * k)) & 255u;
+            return srgb_ && k < 3 ? int(decode[byte]) : int(byte) * 256;
+        };
+        r[k] = blend(blend(channel(a), channel(b), fx), blend(channel(c), channel(d), fx), fy);
     }
     return r;
 }
 
 namespace {
-// Two fixed-point lookups blended by an 8-bit weight, as one level's rows are blended.
-glm::ivec4 blend_fixed(const glm::ivec4& v0, const glm::ivec4& v1, float weight) {
-    const int w = detail::floor_to_int(weight * 256.0f);  // (weight < 1: 0..255)
+// Two fixed-point lookups blended by a weight of `bits` bits, as one level's rows are blended.
+glm::ivec4 blend_fixed(const glm::ivec4& v0, const glm::ivec4& v1, float weight, int bits) {
+    const int w = detail::floor_to_int(weight * float(1 << bits));  // (weight < 1: 0..2^bits - 1)
     glm::ivec4 r;
-    for (int k = 0; k < 4; ++k) r[k] = v0[k] - ((v0[k] * w) >> 8) + ((v1[k] * w) >> 8);
+    for (int k = 0; k < 4; ++k) r[k] = v0[k] - ((v0[k] * w) >> bits) + ((v1[k] * w) >> bits);
     return r;
 }
 glm::vec4 unit_of_fixed(const glm::ivec4& v) { return glm::vec4(v) * Texture::kFixedToUnit; }
@@ -238,7 +257,7 @@ glm::vec4 Texture::sample(glm::vec2 uv, const UvDerivatives& d, const Sampler& s
                 return s.min == Filter::Nearest ? sample_level_fixed<Filter::Nearest>(level, p, s) : sample_level_fixed<Filter::Bilinear>(level, p, s);
             };
             const glm::ivec4 c0 = at_fixed(c.level0);
-            return unit_of_fixed(c.weight == 0.0f ? c0 : blend_fixed(c0, at_fixed(c.level1), c.weight));
+            return unit_of_fixed(c.weight == 0.0f ? c0 : blend_fixed(c0, at_fixed(c.level1), c.weight, fraction_bits(srgb_)));
         }
         const glm::vec4 c0 = at(c.level0, p);
         if (c.weight == 0.0f) return c0;

@@ -63,22 +63,29 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         // sample_level: nearest lanes take the bilinear formula at x = u with weights 0, which
         // gives exactly the one texel (t * 1 + t' * 0 = t).
         const f8 half = select(nearest, splat(0.0f), splat(0.5f));
-        const i8 half256 = select(nearest, splat_i(0), splat_i(128));  // (the same in 1/256 steps)
+        // (The fixed-point filter's steps: 1/256 of a texel, 1/4096 for sRGB; texture.h "Precision".)
+        constexpr int kBits = Texture::fraction_bits(Srgb), kOne = 1 << kBits;
+        const i8 half_step = select(nearest, splat_i(0), splat_i(kOne / 2));  // (half a texel in those steps)
         const uint32_t* texels = this->texels();
         // (The table's address once: srgb::tables() is a call.)
         const uint32_t* decode = Srgb ? reinterpret_cast<const uint32_t*>(srgb::tables().decode.data()) : nullptr;
         const bool has_border = wrap_s == Wrap::Border || wrap_t == Wrap::Border;
         // The footprint's four texels, (ia, ja), (ib, ja), (ia, jb), (ib, jb), from the texel
         // below-left of the sample point, and which are the border color.
-        auto footprint = [&](const LaneLevels& l, const i8& i0, const i8& j0, i8 (&texel)[4], i8 (&border)[4]) {
+        auto footprint_indices = [&](const LaneLevels& l, const i8& i0, const i8& j0, i8 (&index)[4], i8 (&border)[4]) {
             const i8 ia = wrap_texel8<Pot>(i0, l.width, wrap_s), ib = wrap_texel8<Pot>(i0 + 1, l.width, wrap_s);
             const i8 ja = wrap_texel8<Pot>(j0, l.height, wrap_t), jb = wrap_texel8<Pot>(j0 + 1, l.height, wrap_t);
             const i8 is[4] = {ia, ib, ia, ib}, js[4] = {ja, ja, jb, jb};
             for (int t = 0; t < 4; ++t) {
                 border[t] = (is[t] < 0) | (js[t] < 0);  // (never without a border wrap mode)
-                const i8 index = tile_index8(l.offset, l.tiles_x, is[t], js[t]);
-                gather<Wide>(texels, has_border ? select(border[t], splat_i(0), index) : index, texel[t]);
+                const i8 at = tile_index8(l.offset, l.tiles_x, is[t], js[t]);
+                index[t] = has_border ? select(border[t], splat_i(0), at) : at;
             }
+        };
+        auto footprint = [&](const LaneLevels& l, const i8& i0, const i8& j0, i8 (&texel)[4], i8 (&border)[4]) {
+            i8 index[4];
+            footprint_indices(l, i0, j0, index, border);
+            for (int t = 0; t < 4; ++t) gather<Wide>(texels, index[t], texel[t]);
         };
         // Repeat and clamp read the footprint from the tile's apron (texture.h): its lower-left
         // texel wrapped, the others at offsets 1, 5 and 6. Clamp at an edge, where both texels
@@ -94,8 +101,20 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         auto at_level_fixed = [&](const LaneLevels& l, const f8& ur, const f8& vr) {
             // The sample point in 1/256 texel steps (sample_level_fixed; sample_uniform takes
             // a power-of-two texture's from level 0's).
-            const i8 x = floor_small8(ur * to_float(l.width) * 256.0f) - half256, y = floor_small8(vr * to_float(l.height) * 256.0f) - half256;
-            i8 fx = select(nearest, splat_i(0), x & 255), fy = select(nearest, splat_i(0), y & 255);
+            const i8 x = floor_small8(ur * to_float(l.width) * float(kOne)) - half_step, y = floor_small8(vr * to_float(l.height) * float(kOne)) - half_step;
+            i8 fx = select(nearest, splat_i(0), x & (kOne - 1)), fy = select(nearest, splat_i(0), y & (kOne - 1));
+            if constexpr (Srgb) {  // texels decoded onto the fixed-point scale at load (fixed_texels)
+                Fixed8 corner[4];
+                if (apron) {
+                    const i8 i0 = apron_axis(x >> kBits, l.width, wrap_s, fx), j0 = apron_axis(y >> kBits, l.height, wrap_t, fy);
+                    load_footprints_fixed<Wide>(fixed_texels(), tile_index8(l.offset, l.tiles_x, i0, j0), corner);
+                } else {
+                    i8 index[4], border[4];
+                    footprint_indices(l, x >> kBits, y >> kBits, index, border);
+                    for (int t = 0; t < 4; ++t) gather_fixed<Wide>(fixed_texels(), index[t], corner[t]);
+                }
+                return bilinear_fixed<Wide, kBits>(corner, fx, fy);
+            }
             i8 texel[4];
             if (apron) {
                 const i8 i0 = apron_axis(x >> 8, l.width, wrap_s, fx), j0 = apron_axis(y >> 8, l.height, wrap_t, fy);
@@ -128,7 +147,7 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
                 if (two_levels) {
                     const Fixed8 v1 = at_level_fixed(levels1, ur, vr);
                     Fixed8 w;
-                    spread<Wide>(floor_small8(weight * 256.0f) << 8, w);
+                    spread<Wide>(floor_small8(weight * float(kOne)) << (16 - kBits), w);
                     f = {blend16<Wide>(f.lo, v1.lo, w.lo), blend16<Wide>(f.hi, v1.hi, w.hi)};
                 }
                 unit_of_fixed8<Wide>(f, out);
@@ -166,9 +185,7 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
     };
     // And a power-of-two texture's repeat wrap mode (pot_), a mask instead of comparisons.
     auto with_filter = [&]<bool Aniso>() {
-        if constexpr (Srgb) {
-            body.template operator()<Aniso, false, false>();
-        } else if (fixed_point(s)) {
+        if (fixed_point(s)) {
             // (Pot saves 2% on bench_trilinear: not worth another anisotropic copy.)
             if constexpr (!Aniso) {
                 if (pot_ && s.wrap_s == Wrap::Repeat && s.wrap_t == Wrap::Repeat) return body.template operator()<false, true, true>();
@@ -191,7 +208,7 @@ static bool uniform_lookup(bool pot, const Sampler& s) {
 // In the CPU's best copy (simd.h).
 void Texture::sample8(const f8& u, const f8& v, const std::array<f8, 4>& d, const Sampler& s, std::array<f8, 4>& rgba) const {
     // The common lookup first, in a copy of its own (texture_uniform.cpp).
-    if (uniform_lookup(pot_, s) && lanes::sample_uniform(pot_levels(), srgb_, u, v, d, s.mip, rgba)) return;
+    if (uniform_lookup(pot_, s) && lanes::sample_uniform(pot_levels(), u, v, d, s.mip, rgba)) return;
     simd::on_best_path([&]<bool Wide>() {
         if (srgb_) sample_lanes<Wide, true>(u, v, d, s, rgba);
         else sample_lanes<Wide, false>(u, v, d, s, rgba);
@@ -201,7 +218,7 @@ void Texture::sample8(const f8& u, const f8& v, const std::array<f8, 4>& d, cons
 void Texture::sample_quad_rows(const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0, const std::array<f8, 4>& d1,
                                const Sampler& s, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) const {
     // Together where both groups take the common lookup on the same levels, in fixed point.
-    if (uniform_lookup(pot_, s) && !srgb_ && lanes::sample_uniform_rows(pot_levels(), u0, v0, u1, v1, d0, d1, s.mip, rgba0, rgba1)) return;
+    if (uniform_lookup(pot_, s) && lanes::sample_uniform_rows(pot_levels(), u0, v0, u1, v1, d0, d1, s.mip, rgba0, rgba1)) return;
     sample8(u0, v0, d0, s, rgba0);
     sample8(u1, v1, d1, s, rgba1);
 }
@@ -215,12 +232,12 @@ void Texture::sample_quad_rows(const f8& u0, const f8& v0, const f8& u1, const f
 }
 
 void Texture::sample_quad_block(const f8* const (&uv)[4], const Sampler& s, std::array<f8, 4> (&rgba)[4]) const {
-    if (uniform_lookup(pot_, s) && !srgb_ && lanes::sample_uniform_block(pot_levels(), uv, s.mip, rgba)) return;
+    if (uniform_lookup(pot_, s) && lanes::sample_uniform_block(pot_levels(), uv, s.mip, rgba)) return;
     sample_quad_block_by_pairs(*this, uv, s, rgba);
 }
 
 lanes::PotLevels Texture::pot_levels() const {
-    return {texels(), &tables_, levels(), float(width()), float(height())};
+    return {texels(), srgb_ ? fixed_texels() : nullptr, srgb_, &tables_, levels(), float(width()), float(height())};
 }
 
 }  // namespace softraster

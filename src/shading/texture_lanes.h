@@ -275,7 +275,8 @@ template <>
 }
 #endif
 
-// v0 - (v0 w >> 8) + (v1 w >> 8), w256 = w << 8: the blend of sample_level_fixed and blend_fixed.
+// v0 - (v0 w >> n) + (v1 w >> n), w256 = w << (16 - n): the blend of sample_level_fixed and
+// blend_fixed (n = 8 but for sRGB textures, 12).
 template <bool Wide>
 inline u16x16 blend16(const u16x16& v0, const u16x16& v1, const u16x16& w256) {
     u16x16 h0, h1;
@@ -295,25 +296,87 @@ inline Fixed8 bilinear16(const i8 (&texels)[4], const i8& fx, const i8& fy) {
     return {blend16<Wide>(row(a.lo, b.lo, wx.lo), row(c.lo, d.lo, wx.lo), wy.lo), blend16<Wide>(row(a.hi, b.hi, wx.hi), row(c.hi, d.hi, wx.hi), wy.hi)};
 }
 
+// ---- an sRGB texture's texels, already on the fixed-point scale (Texture::fixed_texels)
+//
+// Each texel is four 16-bit values, eight bytes: a lane's texel goes to its place in Fixed8
+// (lane l in lo for l = 0, 1, 4, 5, in hi for 2, 3, 6, 7) with no widening.
+inline void put_fixed(Fixed8& out, int lane, uint64_t texel) {
+    u16x16& half = (lane & 2) ? out.hi : out.lo;
+    const int at = 4 * ((lane & 1) + ((lane & 4) >> 1));
+    for (int c = 0; c < 4; ++c) half[at + c] = uint16_t(texel >> (16 * c));
+}
+// The four texels of each lane's footprint in the apron layout (load_footprints).
+template <bool Wide>
+inline void load_footprints_fixed(const uint64_t* p, const i8& index, Fixed8 (&corner)[4]) {
+    for (int k = 0; k < simd::kLanes; ++k) {
+        const uint64_t* t = p + uint32_t(index[k]);
+        put_fixed(corner[0], k, t[0]), put_fixed(corner[1], k, t[1]);
+        put_fixed(corner[2], k, t[Texture::kTileSide]), put_fixed(corner[3], k, t[Texture::kTileSide + 1]);
+    }
+}
+// One texel per lane, anywhere (the footprints of mirrored repeat).
+template <bool Wide>
+inline void gather_fixed(const uint64_t* p, const i8& index, Fixed8& out) {
+    for (int k = 0; k < simd::kLanes; ++k) put_fixed(out, k, p[uint32_t(index[k])]);
+}
+#if SOFTRASTER_HAS_AVX2_PATH
+// A lane's two 16-byte rows of its footprint, (a, b) and (c, d); lanes k and k + 4 share a
+// register, and one unpack of two such registers gives a corner's texels in Fixed8's order.
+[[gnu::target("avx2")]] inline __m256i two_texels_of_two_lanes(const uint64_t* low, const uint64_t* high) {
+    return _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(low))),
+                                   _mm_loadu_si128(reinterpret_cast<const __m128i*>(high)), 1);
+}
+template <>
+[[gnu::target("avx2")]] inline void load_footprints_fixed<true>(const uint64_t* p, const i8& index, Fixed8 (&corner)[4]) {
+    alignas(32) uint32_t at[simd::kLanes];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(at), __m256i(index));
+    for (int row = 0; row < 2; ++row) {  // [a b] (row 0) or [c d] (row 1) of lanes k and k + 4
+        const uint64_t* q = p + row * Texture::kTileSide;
+        const __m256i l0 = two_texels_of_two_lanes(q + at[0], q + at[4]), l1 = two_texels_of_two_lanes(q + at[1], q + at[5]);
+        const __m256i l2 = two_texels_of_two_lanes(q + at[2], q + at[6]), l3 = two_texels_of_two_lanes(q + at[3], q + at[7]);
+        corner[2 * row] = {u16x16(_mm256_unpacklo_epi64(l0, l1)), u16x16(_mm256_unpacklo_epi64(l2, l3))};
+        corner[2 * row + 1] = {u16x16(_mm256_unpackhi_epi64(l0, l1)), u16x16(_mm256_unpackhi_epi64(l2, l3))};
+    }
+}
+template <>
+[[gnu::target("avx2")]] inline void gather_fixed<true>(const uint64_t* p, const i8& index, Fixed8& out) {
+    const __m256i i = __m256i(index);
+    const __m128i lo = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(i, _mm256_setr_epi32(0, 1, 4, 5, 0, 0, 0, 0)));
+    const __m128i hi = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(i, _mm256_setr_epi32(2, 3, 6, 7, 0, 0, 0, 0)));
+    const long long* base = reinterpret_cast<const long long*>(p);
+    out = {u16x16(_mm256_i32gather_epi64(base, lo, 8)), u16x16(_mm256_i32gather_epi64(base, hi, 8))};
+}
+#endif
+// A fixed-point level lookup from texels on the fixed-point scale, weights of Bits bits
+// (sample_level_fixed's rows as its columns: p - (p w >> Bits) + (q w >> Bits)).
+template <bool Wide, int Bits>
+inline Fixed8 bilinear_fixed(const Fixed8 (&c)[4], const i8& fx, const i8& fy) {
+    Fixed8 wx, wy;
+    spread<Wide>(fx << (16 - Bits), wx), spread<Wide>(fy << (16 - Bits), wy);
+    return {blend16<Wide>(blend16<Wide>(c[0].lo, c[1].lo, wx.lo), blend16<Wide>(c[2].lo, c[3].lo, wx.lo), wy.lo),
+            blend16<Wide>(blend16<Wide>(c[0].hi, c[1].hi, wx.hi), blend16<Wide>(c[2].hi, c[3].hi, wx.hi), wy.hi)};
+}
+
 // The common lookup (texture_uniform.cpp): a power-of-two texture repeating on both axes,
-// bilinear both ways, no anisotropy, every lane on the same level(s). The texture's numbers
-// it reads: the first 16 levels' (LevelTables) and level 0's sides.
+// bilinear both ways, no anisotropy, every lane on the same level(s), in the CPU's best copy,
+// in fixed point. The texture's numbers it reads: the first 16 levels' (LevelTables), level
+// 0's sides, and its texels, an sRGB texture's decoded (Texture::fixed_texels).
 struct PotLevels {
     const uint32_t* texels;
+    const uint64_t* fixed_texels;  // (sRGB textures only)
+    bool srgb;
     const LevelTables* tables;
     int levels;
     float w, h;
 };
-// The lookup in the CPU's best copy, sRGB textures filtered in float, others in fixed
-// point; false (rgba untouched) if the lanes' levels differ.
-// Two groups' lookups (Texture::sample_quad_rows), linear textures only: false (rgba
-// untouched) unless all sixteen lanes take the same level(s) from the same derivatives.
+// One group's lookups: false (rgba untouched) if its lanes' levels differ.
+bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba);
+// Two groups' lookups (Texture::sample_quad_rows): false (rgba untouched) unless all sixteen
+// lanes take the same level(s) from the same derivatives.
 bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1);
-// Four groups' lookups (Texture::sample_quad_block), linear textures only: false (rgba
-// untouched) unless groups 0 and 1 have the same derivatives, 2 and 3 too, and all 32 lanes
-// take the same level(s).
+// Four groups' lookups (Texture::sample_quad_block): false (rgba untouched) unless groups 0
+// and 1 have the same derivatives, 2 and 3 too, and all 32 lanes take the same level(s).
 bool sample_uniform_block(const PotLevels& t, const f8* const (&uv)[4], MipFilter mip, std::array<f8, 4> (&rgba)[4]);
-bool sample_uniform(const PotLevels& t, bool srgb, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba);
 
 }  // namespace softraster::lanes

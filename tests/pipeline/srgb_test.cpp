@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -69,16 +70,31 @@ TEST(Srgb, NoIntervalHoldsTwoThresholds) {
     EXPECT_GT(double(t.threshold[1]), std::ldexp(1.0, -13));
 }
 
+// Eight lanes at once (the generic vector code, and AVX2's with gathers where the CPU has
+// it) give each lane's encode(): random values, every threshold and the float just below
+// it, and the edges (NaN, infinities, signed zeros, denormals, 1 and past it).
 TEST(Srgb, EightLanesAgreeWithOne) {
+    std::vector<float> values = {std::numeric_limits<float>::quiet_NaN(), 1.0f, 0.0f, -0.0f, 1e30f, -1e30f,
+                                 std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                                 std::numeric_limits<float>::denorm_min(), 1e-30f, std::nextafter(1.0f, 0.0f), std::nextafter(1.0f, 2.0f)};
+    const srgb::Tables& t = srgb::tables();
+    for (int k = 1; k < 256; ++k) values.push_back(t.threshold[size_t(k)]), values.push_back(std::nextafter(t.threshold[size_t(k)], 0.0f));
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> u(-0.2f, 1.2f);
-    for (int i = 0; i < 20000; ++i) {
+    while (values.size() < 8 * 20000) values.push_back(u(rng));
+    for (size_t i = 0; i < values.size(); i += simd::kLanes) {
         simd::f8 l;
-        for (int k = 0; k < simd::kLanes; ++k) l[k] = u(rng);
-        if (i == 0) l[0] = std::numeric_limits<float>::quiet_NaN(), l[1] = 1.0f, l[2] = 0.0f, l[3] = 1e30f;
+        for (int k = 0; k < simd::kLanes; ++k) l[k] = values[i + size_t(k)];
         simd::i8 got;
         srgb::encode(l, got);
         for (int k = 0; k < simd::kLanes; ++k) ASSERT_EQ(got[k], int(srgb::encode(l[k]))) << l[k];
+#if SOFTRASTER_HAS_AVX2_PATH
+        if (simd::wide_path_runs()) {
+            simd::i8 wide;
+            srgb::encode_avx2(t, l, wide);
+            for (int k = 0; k < simd::kLanes; ++k) ASSERT_EQ(wide[k], int(srgb::encode(l[k]))) << "AVX2 " << l[k];
+        }
+#endif
     }
 }
 

@@ -257,6 +257,49 @@ TEST(Texture, FixedPointBilinearValues) {
     EXPECT_EQ(chain.sample(glm::vec2(0.1f, 0.1f), d, tri).r, float(v0 - ((v0 * 88) >> 8) + ((v1 * 88) >> 8)) * Texture::kFixedToUnit);
 }
 
+// An sRGB texture filters in fixed point too, its texels' r, g, b decoded onto the scale
+// first (srgb::Tables::decode_fixed), the sample point and weights in 1/4096 steps: within
+// 3/65280 of the exact formula with the same cut weights (texture.h "Precision"), and a
+// texel center gives its decoded value to 1/130560.
+TEST(Texture, SrgbFixedPointIsWithinItsBound) {
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<int> byte(0, 255);
+    Image img(16, 8);
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) img.at(x, y) = {uint8_t(byte(rng)), uint8_t(byte(rng)), uint8_t(byte(rng)), uint8_t(byte(rng))};
+    const Texture t(img, ColorSpace::Srgb);
+    const Sampler s = Sampler::plain(Filter::Bilinear, Wrap::Clamp);
+    std::uniform_real_distribution<float> coord(0.0f, 1.0f);
+    auto exact = [&](int i, int j, int c) {  // texel (i, j) clamped, decoded in double
+        const Rgba8 v = t.stored(0, std::clamp(i, 0, t.width() - 1), std::clamp(j, 0, t.height() - 1));
+        const int k = (&v.r)[c];
+        if (c == 3) return k / 255.0;
+        const double e = k / 255.0;
+        return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+    };
+    double worst = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const glm::vec2 uv(coord(rng), coord(rng));
+        // (the sample point and the weights in 1/4096 steps for sRGB)
+        const int x = int(std::floor(uv.x * float(t.width()) * 4096.0f)) - 2048, y = int(std::floor(uv.y * float(t.height()) * 4096.0f)) - 2048;
+        const int i = x >> 12, j = y >> 12;
+        const double fx = (x & 4095) / 4096.0, fy = (y & 4095) / 4096.0;
+        const glm::vec4 got = t.sample(uv, s);
+        for (int c = 0; c < 4; ++c) {
+            const double bottom = exact(i, j, c) * (1 - fx) + exact(i + 1, j, c) * fx, top = exact(i, j + 1, c) * (1 - fx) + exact(i + 1, j + 1, c) * fx;
+            const double want = bottom * (1 - fy) + top * fy;
+            worst = std::max(worst, std::abs(double(got[c]) - want));
+            ASSERT_LE(std::abs(double(got[c]) - want), 3.0 / 65280.0) << "trial " << trial << " channel " << c;
+        }
+    }
+    EXPECT_GT(worst, 0.0);  // (fixed point: not the float formula's bits)
+    for (int j = 0; j < t.height(); ++j)
+        for (int i = 0; i < t.width(); ++i) {
+            const glm::vec4 got = t.sample(glm::vec2((float(i) + 0.5f) / float(t.width()), (float(j) + 0.5f) / float(t.height())), s);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], exact(i, j, c), 0.5 / 65280.0 + 1e-7) << i << "," << j << " " << c;
+        }
+}
+
 TEST(Texture, MirrorAndBorderWrapping) {
     const Texture t = four_texels();  // bottom row: blue, white; top row: red, green
     const Sampler mirror = Sampler::plain(Filter::Nearest, Wrap::Mirror);

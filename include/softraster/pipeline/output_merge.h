@@ -251,7 +251,15 @@ template <bool Wide = false>
 inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace space, simd::i8& out) {
     if (space == ColorSpace::Linear) return quantize_pack_rgba8<Wide>(c, out);
     simd::i8 r, g, b;
-    srgb::encode(c[0], r), srgb::encode(c[1], g), srgb::encode(c[2], b);
+#if SOFTRASTER_HAS_AVX2_PATH
+    if constexpr (Wide) {
+        const srgb::Tables& t = srgb::tables();
+        srgb::encode_avx2(t, c[0], r), srgb::encode_avx2(t, c[1], g), srgb::encode_avx2(t, c[2], b);
+    } else
+#endif
+    {
+        srgb::encode(c[0], r), srgb::encode(c[1], g), srgb::encode(c[2], b);
+    }
     out = r | (g << 8) | (b << 16) | (simd::quantize_unorm8(c[3]) << 24);
 }
 

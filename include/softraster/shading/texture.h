@@ -13,12 +13,15 @@
 // level of detail, computed as Mesa llvmpipe computes it; select_lod in texture.cpp).
 //
 // Precision: an 8-bit texture filters in fixed point, as llvmpipe filters 8-bit textures.
-// The sample point is cut to 1/256 of a texel, each channel is carried as value x 256 (0 to
-// 65280) through the bilinear and trilinear blends, and the weights are 8 bits (the level
-// weight too). Every step is exact but the floor in v - (v w >> 8) + (v' w >> 8). The result
-// differs from a float blend by less than 2/65280 for the same weights. Two kinds of texture
-// filter in float instead: an sRGB texture (its texels are decoded to linear light first) and
-// one with a border color.
+// The sample point is cut to 1/256 of a texel, each channel is carried on a scale of 0 to
+// 65280 through the bilinear and trilinear blends (value x 256), and the weights are 8 bits
+// (the level weight too). Each blend is v - (v w >> 8) + (v' w >> 8), exact for a linear
+// texture's rows, where v = 256 a. An sRGB texture's r, g, b are decoded to linear light and
+// rounded to the scale (srgb::Tables::decode_fixed), and its sample point and weights have
+// 12 bits (1/4096 of a texel): llvmpipe filters sRGB texels in float, and the dark end of
+// the sRGB curve would show 8-bit weights' steps (up to 5/255 on its conformance scene).
+// The result differs from a float blend by less than 2/65280 for the same weights (3/65280
+// for sRGB, its texels rounded). A lookup with a border color filters in float instead.
 //
 // Anisotropic filtering (GL_TEXTURE_MAX_ANISOTROPY, EXT_texture_filter_anisotropic): where
 // the footprint is N times longer than wide (N up to the sampler's limit), N lookups along
@@ -96,6 +99,8 @@ public:
     // The fixed-point channel value (0 to 65280) to [0, 1]: times 1/255 as an 8-bit texel is
     // converted, and 1/256 (exact), so that value x 256 gives the 8-bit conversion's bits.
     static constexpr float kFixedToUnit = (1.0f / 255.0f) / 256.0f;
+    // The fixed-point filter's fraction bits, of the sample point and the weights (above).
+    static constexpr int fraction_bits(bool srgb) { return srgb ? 12 : 8; }
 
     // image row 0 is the top of the picture
     explicit Texture(const Image& image, ColorSpace color = ColorSpace::Linear);
@@ -164,9 +169,15 @@ private:
         return size_t(l.offset) + size_t((j >> 2) * l.tiles_x + (i >> 2)) * kTileTexels + size_t((j & 3) * kTileSide + (i & 3));
     }
     const uint32_t* texels() const { return storage_.data() + aligned_; }
+    // An sRGB texture's texels decoded onto the fixed-point scale (above), r, g, b, a in the
+    // 16-bit quarters from the lowest, in the same places as texels(): the eight-lane filter
+    // reads them as a linear texture's bytes, with no table lookup per channel and texel.
+    const uint64_t* fixed_texels() const { return fixed_storage_.data() + fixed_aligned_; }
     std::vector<Level> levels_;
     std::vector<uint32_t> storage_;  // RGBA8 texels, r in the low byte
     size_t aligned_ = 0;              // index of the first texel: at a 64-byte boundary
+    std::vector<uint64_t> fixed_storage_;  // (sRGB textures only)
+    size_t fixed_aligned_ = 0;
     bool srgb_ = false;
     bool pot_ = false;  // both sides powers of two (then every level's are)
     lanes::LevelTables tables_{};
@@ -175,7 +186,7 @@ private:
     template <Filter F>
     glm::ivec4 sample_level_fixed(int level, glm::vec2 uv, const Sampler& s) const;
     // Whether a lookup filters in fixed point (above).
-    bool fixed_point(const Sampler& s) const { return !srgb_ && s.wrap_s != Wrap::Border && s.wrap_t != Wrap::Border; }
+    bool fixed_point(const Sampler& s) const { return s.wrap_s != Wrap::Border && s.wrap_t != Wrap::Border; }
     template <bool Wide, bool Srgb>
     void sample_lanes(const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d, const Sampler& s,
                       std::array<simd::f8, 4>& rgba) const;
@@ -188,6 +199,11 @@ namespace detail {
 inline int floor_to_int(float t) {
     if (!(t > -1.0e8f)) return -100000000;
     if (t > 1.0e8f) return 100000000;
+    const int i = int(t);
+    return float(i) > t ? i - 1 : i;
+}
+// floor(t) as an int for |t| < 2^31 (a reduced coordinate in fixed-point steps).
+inline int floor_bounded(float t) {
     const int i = int(t);
     return float(i) > t ? i - 1 : i;
 }
