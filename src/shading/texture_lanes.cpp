@@ -186,8 +186,9 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
     // And a power-of-two texture's repeat wrap mode (pot_), a mask instead of comparisons.
     auto with_filter = [&]<bool Aniso>() {
         if (fixed_point(s)) {
-            // (Pot saves 2% on bench_trilinear: not worth another anisotropic copy.)
-            if constexpr (!Aniso) {
+            // (Pot saves 2% on bench_trilinear: not worth another anisotropic copy, nor one
+            // for sRGB textures, whose power-of-two lookups mostly take the common one.)
+            if constexpr (!Aniso && !Srgb) {
                 if (pot_ && s.wrap_s == Wrap::Repeat && s.wrap_t == Wrap::Repeat) return body.template operator()<false, true, true>();
             }
             body.template operator()<Aniso, true, false>();
