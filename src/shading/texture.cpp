@@ -63,6 +63,10 @@ inline int probe_count(float rmax, float rmin, int max_anisotropy) {
 struct Footprint {
     int ia, ib, ja, jb;
 };
+// p + (q - p) w / 2^bits (w < 2^bits) as sixteen-bit lanes compute it with two high-half
+// products (sample_lanes): p - (p w >> bits) + (q w >> bits), within p..q.
+inline int blend_fixed(int p, int q, int w, int bits) { return p - ((p * w) >> bits) + ((q * w) >> bits); }
+
 inline Footprint footprint(int i0, int j0, int width, int height, const Sampler& s) {
     return {detail::wrap_texel(i0, width, s.wrap_s), detail::wrap_texel(i0 + 1, width, s.wrap_s), detail::wrap_texel(j0, height, s.wrap_t),
             detail::wrap_texel(j0 + 1, height, s.wrap_t)};
@@ -215,14 +219,13 @@ glm::ivec4 Texture::sample_level_fixed(int level, glm::vec2 uv, const Sampler& s
     const uint32_t a = texels()[texel_index(l, f.ia, f.ja)], b = texels()[texel_index(l, f.ib, f.ja)];
     const uint32_t c = texels()[texel_index(l, f.ia, f.jb)], d = texels()[texel_index(l, f.ib, f.jb)];
     const std::array<uint16_t, 256>& decode = srgb::tables().decode_fixed;
-    auto blend = [bits](int p, int q, int w) { return p - ((p * w) >> bits) + ((q * w) >> bits); };
     glm::ivec4 r;
     for (int k = 0; k < 4; ++k) {
         auto channel = [&](uint32_t t) {
             const uint32_t byte = (t >> (8 * k)) & 255u;
             return srgb_ && k < 3 ? int(decode[byte]) : int(byte) * 256;
         };
-        r[k] = blend(blend(channel(a), channel(b), fx), blend(channel(c), channel(d), fx), fy);
+        r[k] = blend_fixed(blend_fixed(channel(a), channel(b), fx, bits), blend_fixed(channel(c), channel(d), fx, bits), fy, bits);
     }
     return r;
 }
@@ -232,7 +235,7 @@ namespace {
 glm::ivec4 blend_fixed(const glm::ivec4& v0, const glm::ivec4& v1, float weight, int bits) {
     const int w = detail::floor_to_int(weight * float(1 << bits));  // (weight < 1: 0..2^bits - 1)
     glm::ivec4 r;
-    for (int k = 0; k < 4; ++k) r[k] = v0[k] - ((v0[k] * w) >> bits) + ((v1[k] * w) >> bits);
+    for (int k = 0; k < 4; ++k) r[k] = blend_fixed(v0[k], v1[k], w, bits);
     return r;
 }
 glm::vec4 unit_of_fixed(const glm::ivec4& v) { return glm::vec4(v) * Texture::kFixedToUnit; }

@@ -238,7 +238,7 @@ void Texture::sample_quad_block(const f8* const (&uv)[4], const Sampler& s, std:
 }
 
 lanes::PotLevels Texture::pot_levels() const {
-    return {texels(), srgb_ ? fixed_texels() : nullptr, srgb_, &tables_, levels(), float(width()), float(height())};
+    return {texels(), srgb_ ? fixed_texels() : nullptr, &tables_, levels(), float(width()), float(height())};
 }
 
 }  // namespace softraster

@@ -363,8 +363,7 @@ inline Fixed8 bilinear_fixed(const Fixed8 (&c)[4], const i8& fx, const i8& fy) {
 // 0's sides, and its texels, an sRGB texture's decoded (Texture::fixed_texels).
 struct PotLevels {
     const uint32_t* texels;
-    const uint64_t* fixed_texels;  // (sRGB textures only)
-    bool srgb;
+    const uint64_t* fixed_texels;  // an sRGB texture's; null for a linear one
     const LevelTables* tables;
     int levels;
     float w, h;

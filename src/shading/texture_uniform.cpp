@@ -183,7 +183,7 @@ inline bool same_quads(const f8* d0, const f8* d1) {
 template <class F>
 inline bool per_kind_and_path(const PotLevels& t, const F& f) {
     auto kind = [&]<bool Srgb>() { return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() { return f.template operator()<Wide, Srgb>(); }); };
-    return t.srgb ? kind.template operator()<true>() : kind.template operator()<false>();
+    return t.fixed_texels ? kind.template operator()<true>() : kind.template operator()<false>();
 }
 
 bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
