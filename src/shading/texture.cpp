@@ -216,17 +216,20 @@ glm::ivec4 Texture::sample_level_fixed(int level, glm::vec2 uv, const Sampler& s
     const int y = detail::floor_bounded(detail::reduce(uv.y, s.wrap_t) * float(l.height) * float(one)) - half;
     const int fx = F == Filter::Nearest ? 0 : x & (one - 1), fy = F == Filter::Nearest ? 0 : y & (one - 1);
     const Footprint f = footprint(x >> bits, y >> bits, l.width, l.height, s);
-    const uint32_t a = texels()[texel_index(l, f.ia, f.ja)], b = texels()[texel_index(l, f.ib, f.ja)];
-    const uint32_t c = texels()[texel_index(l, f.ia, f.jb)], d = texels()[texel_index(l, f.ib, f.jb)];
-    const std::array<uint16_t, 256>& decode = srgb::tables().decode_fixed;
+    // Each texel's four channels on the fixed-point scale: an sRGB texture's as stored decoded
+    // (fixed_texels, which the eight-lane filter reads too), a linear one's bytes times 256.
+    auto texel_fixed = [&](int i, int j) {
+        const size_t at = texel_index(l, i, j);
+        if (srgb_) {
+            const uint64_t t = fixed_texels()[at];
+            return glm::ivec4(int(t & 0xffffu), int((t >> 16) & 0xffffu), int((t >> 32) & 0xffffu), int(t >> 48));
+        }
+        const uint32_t t = texels()[at];
+        return glm::ivec4(int(t & 255u), int((t >> 8) & 255u), int((t >> 16) & 255u), int(t >> 24)) * 256;
+    };
+    const glm::ivec4 a = texel_fixed(f.ia, f.ja), b = texel_fixed(f.ib, f.ja), c = texel_fixed(f.ia, f.jb), d = texel_fixed(f.ib, f.jb);
     glm::ivec4 r;
-    for (int k = 0; k < 4; ++k) {
-        auto channel = [&](uint32_t t) {
-            const uint32_t byte = (t >> (8 * k)) & 255u;
-            return srgb_ && k < 3 ? int(decode[byte]) : int(byte) * 256;
-        };
-        r[k] = blend_fixed(blend_fixed(channel(a), channel(b), fx, bits), blend_fixed(channel(c), channel(d), fx, bits), fy, bits);
-    }
+    for (int k = 0; k < 4; ++k) r[k] = blend_fixed(blend_fixed(a[k], b[k], fx, bits), blend_fixed(c[k], d[k], fx, bits), fy, bits);
     return r;
 }
 
