@@ -7,7 +7,7 @@ SUDO=""
 pkgs=(cmake ninja-build g++ pkg-config python3
       libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev libopenexr-dev libpng-dev libnetpbm-dev
       libopenimageio-dev libassimp-dev
-      libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libgif-dev libimagequant-dev libchafa-dev
+      libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libgif-dev libimagequant-dev libchafa-dev libsleef-dev
       libsdl2-dev libsdl2-ttf-dev libx11-dev fonts-dejavu-core help2man
       pybind11-dev python3-dev python3-numpy)
 if [ "${1:-}" = "--tests" ]; then

@@ -4,6 +4,8 @@
                      reflected objects draw only inside it, then the mirror and the objects
   bench_blend_modes  twelve full-screen layers, each with another blend equation and factors
   bench_msaa16       bench_msaa's sphere with 16 samples (llvmpipe cannot: softraster only)
+  bench_ibl          60 pbr spheres lit by an environment alone (image-based lighting), their
+                     roughness across, metallic down: the environment term at every pixel
 Run it again after editing; the files it writes are committed."""
 import json, os
 
@@ -63,3 +65,17 @@ msaa = json.load(open(os.path.join(HERE, 'bench_msaa.json')))
 msaa["version"] = 2
 msaa["image"]["samples"] = 16
 write('bench_msaa16', msaa)
+
+spheres = []
+for r in range(6):
+    for c in range(10):
+        spheres.append({"builtin": {"type": "uv_sphere", "radius": 0.56, "rings": 32, "segments": 64},
+                        "transform": {"translate": [round((c - 4.5) * 1.25, 3), round((2.5 - r) * 1.25, 3), 0]},
+                        "material": {"shading": "pbr", "color": [round(0.55 + 0.04 * c, 3), round(0.5 + 0.05 * r, 3), 0.45, 1],
+                                     "metallic": round(r / 5, 3), "roughness": round(0.05 + 0.95 * c / 9, 3)}})
+write('bench_ibl', {
+    "version": 2,
+    "image": {"width": 1920, "height": 1080, "background": [0.05, 0.06, 0.08, 1], "color_space": "srgb", "tone_mapping": "aces"},
+    "camera": {"eye": [0, 0, 9.8], "target": [0, 0, 0], "fov_y": 45},
+    "environment": {"file": "../../tests/scenes/textures/sky_128.hdr"},
+    "objects": spheres})

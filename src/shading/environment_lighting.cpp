@@ -8,6 +8,7 @@
 
 #include <ImfArray.h>
 #include <ImfRgbaFile.h>
+#include <sleef.h>
 #include <stb_image.h>
 
 #include "io/read_file.h"
@@ -212,6 +213,11 @@ bool radiance_complete(const std::string& b, int w, int h) {
 
 }  // namespace
 
+glm::vec2 equirect_uv(const glm::vec3& d) {
+    constexpr float kInvTwoPi = 0.159154943091895f, kInvPi = 0.318309886183791f;
+    return {0.5f + Sleef_cinz_atan2f1_u10purec(d.x, -d.z) * kInvTwoPi, Sleef_cinz_acosf1_u10purec(std::clamp(d.y, -1.0f, 1.0f)) * kInvPi};
+}
+
 EnvironmentLighting prepare_environment(const EquirectImage& picture, float intensity, bool background) {
     EnvironmentLighting e;
     e.intensity = intensity;
@@ -220,8 +226,11 @@ EnvironmentLighting prepare_environment(const EquirectImage& picture, float inte
     std::vector<EquirectImage> pyramid{base_level(picture)};
     while (int(pyramid.size()) < EnvironmentLighting::kLevels) pyramid.push_back(half(pyramid.back()));
     e.irradiance = irradiance(pyramid[0]);
-    e.specular[0] = pyramid[0];
-    for (int k = 1; k < EnvironmentLighting::kLevels; ++k) e.specular[size_t(k)] = prefilter(pyramid, k);
+    e.specular.reserve(size_t(EnvironmentLighting::level_offset(EnvironmentLighting::kLevels)));
+    for (int k = 0; k < EnvironmentLighting::kLevels; ++k) {
+        const EquirectImage level = k == 0 ? pyramid[0] : prefilter(pyramid, k);
+        e.specular.insert(e.specular.end(), level.texels.begin(), level.texels.end());
+    }
     e.lut = brdf_lut();
     return e;
 }

@@ -75,8 +75,8 @@ GlEnvironment::GlEnvironment(const softraster::EnvironmentLighting* e, const glm
     glBindTexture(GL_TEXTURE_2D, specular_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     for (int k = 0; k < EnvironmentLighting::kLevels; ++k) {  // row 0 first: t = 0 is the top, as v
-        const softraster::EquirectImage& m = env_->specular[size_t(k)];
-        glTexImage2D(GL_TEXTURE_2D, k, GL_RGB32F, m.width, m.height, 0, GL_RGB, GL_FLOAT, m.texels.data());
+        const softraster::EquirectView m = env_->specular_level(k);
+        glTexImage2D(GL_TEXTURE_2D, k, GL_RGB32F, m.width, m.height, 0, GL_RGB, GL_FLOAT, m.texels);
     }
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, EnvironmentLighting::kLevels - 1);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);

@@ -3,6 +3,7 @@
 // Radiance HDR files.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <random>
 #include <string>
@@ -89,6 +90,44 @@ TEST(EnvironmentLighting, SplitSumTableMatchesTheIntegral) {
         EXPECT_NEAR(ab.x, a, 0.02) << i << ", " << j;
         EXPECT_NEAR(ab.y, b, 0.01) << i << ", " << j;
     }
+}
+
+// Eight fragments at once (environment_light8) give each lane the bits of one at a time, on
+// both CPU paths: the reflected direction all around the picture (its seam at u = 0 and 1, the
+// poles), every level and the last alone, the table's edges.
+TEST(EnvironmentLighting, EightLanesEqualOneAtATimeOnBothPaths) {
+    const EnvironmentLighting e = prepare_environment(
+        picture(300, 150, [](const glm::vec3& d) { return glm::vec3(1.0f + d.x, 0.5f + 0.5f * d.y * d.y, std::max(0.0f, d.z) + 0.1f * d.x * d.y); }), 0.8f);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const float roughnesses[] = {0.03f, 0.2f, 0.4f, 0.5f, 0.8f, 0.99f, 1.0f};
+    for (const bool generic : {false, true}) {
+        SCOPED_TRACE(generic ? "generic path" : "best path");
+        simd::use_generic_path(generic);
+        for (int round = 0; round < 400; ++round) {
+            simd::vec3x8 c_diff, f0, n, v, out;
+            simd::f8 nv, roughness, occlusion;
+            for (int k = 0; k < simd::kLanes; ++k) {
+                glm::vec3 nk = random_direction(rng), vk = random_direction(rng);
+                if (round % 5 == 0) nk = glm::normalize(glm::vec3(0.0f, 1.0f, 1e-4f * float(k - 4))), vk = {0.0f, 0.0f, -1.0f};  // R near the seam
+                if (round % 7 == 0) nk = vk;                                                                                       // R = V
+                const float r = round % 2 ? roughnesses[(round / 2 + k) % 7] : 0.03f + 0.97f * unit(rng);
+                n.x[k] = nk.x, n.y[k] = nk.y, n.z[k] = nk.z, v.x[k] = vk.x, v.y[k] = vk.y, v.z[k] = vk.z;
+                nv[k] = round % 3 ? std::max(0.0f, glm::dot(nk, vk)) : float(k % 2);
+                roughness[k] = r, occlusion[k] = unit(rng);
+                c_diff.x[k] = unit(rng), c_diff.y[k] = unit(rng), c_diff.z[k] = unit(rng);
+                f0.x[k] = unit(rng), f0.y[k] = unit(rng), f0.z[k] = unit(rng);
+            }
+            environment_light8(e, c_diff, f0, n, v, nv, roughness, occlusion, out);
+            for (int k = 0; k < simd::kLanes; ++k) {
+                const glm::vec3 one = environment_light(e, {c_diff.x[k], c_diff.y[k], c_diff.z[k]}, {f0.x[k], f0.y[k], f0.z[k]},
+                                                        {n.x[k], n.y[k], n.z[k]}, {v.x[k], v.y[k], v.z[k]}, nv[k], roughness[k], occlusion[k]);
+                ASSERT_EQ(std::bit_cast<glm::uvec3>(glm::vec3(out.x[k], out.y[k], out.z[k])), std::bit_cast<glm::uvec3>(one))
+                    << "round " << round << " lane " << k << " roughness " << roughness[k];
+            }
+        }
+    }
+    simd::use_generic_path(false);
 }
 
 // A Radiance file written by hand (flat RGBE: 128, 128, 128, 129 is 1.0), and its errors.

@@ -21,15 +21,24 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "softraster/pipeline/simd.h"
+
 namespace softraster {
 
 // An equirectangular picture: texel (i, j) of a w x h picture is seen in the direction
 // (sin t sin p, cos t, -sin t cos p), p = 2 pi ((i + 1/2)/w - 1/2), t = pi (j + 1/2)/h:
 // row 0 looks up (+y), the middle of the picture looks down -z.
+// A picture held elsewhere (one level of the specular chain below), read the same way.
+struct EquirectView {
+    const glm::vec3* texels = nullptr;  // row by row from the top
+    int width = 0, height = 0;
+    const glm::vec3& at(int i, int j) const { return texels[size_t(j) * size_t(width) + size_t(i)]; }
+};
 struct EquirectImage {
     int width = 0, height = 0;
     std::vector<glm::vec3> texels;  // row by row from the top
     const glm::vec3& at(int i, int j) const { return texels[size_t(j) * size_t(width) + size_t(i)]; }
+    operator EquirectView() const { return {texels.data(), width, height}; }
 };
 
 struct EnvironmentLighting {
@@ -38,21 +47,30 @@ struct EnvironmentLighting {
     static constexpr int kLutSize = 32;                        // (N.V, roughness) texels
     // E(N)/pi = k0 + k1 y + k2 z + k3 x + k4 xy + k5 yz + k6 (3 z^2 - 1) + k7 xz + k8 (x^2 - y^2)
     std::array<glm::vec3, 9> irradiance{};
-    std::array<EquirectImage, kLevels> specular;  // level k is (256 >> k) x (128 >> k)
+    // The specular levels one after another, level k ((256 >> k) x (128 >> k)) from texel
+    // level_offset(k) on: in one array, eight lanes on different levels read it with one
+    // gather (environment_lanes.cpp).
+    std::vector<glm::vec3> specular;
+    static constexpr int level_offset(int k) {
+        int at = 0;
+        for (int l = 0; l < k; ++l) at += (kBaseWidth >> l) * (kBaseHeight >> l);
+        return at;
+    }
+    EquirectView specular_level(int k) const { return {specular.data() + level_offset(k), kBaseWidth >> k, kBaseHeight >> k}; }
     std::vector<glm::vec2> lut;                   // A, B at ((i + 1/2)/32, (j + 1/2)/32), row j by roughness
     float intensity = 1.0f;
     EquirectImage picture;    // as read: the background (sky_shader.h)
     bool background = false;  // the picture behind the scene instead of its background color
 };
 
-// Where a direction falls in an equirectangular picture, in [0, 1]^2 (u across, v down).
-inline glm::vec2 equirect_uv(const glm::vec3& d) {
-    constexpr float kInvTwoPi = 0.159154943091895f, kInvPi = 0.318309886183791f;
-    return {0.5f + std::atan2(d.x, -d.z) * kInvTwoPi, std::acos(std::clamp(d.y, -1.0f, 1.0f)) * kInvPi};
-}
+// Where a direction falls in an equirectangular picture, in [0, 1]^2 (u across, v down):
+// (1/2 + atan2(d.x, -d.z) / 2 pi, acos(d.y) / pi). The angles come from SLEEF's functions
+// that give the same bits on every instruction set (its "cinz" ones, within 1 ulp), so that
+// eight lanes at once (environment_lanes.cpp) give what one at a time gives here.
+glm::vec2 equirect_uv(const glm::vec3& d);
 
 // GL's bilinear filter at uv: across wraps around (GL_REPEAT), down is clamped to the edge.
-inline glm::vec3 sample_bilinear(const EquirectImage& m, const glm::vec2& uv) {
+inline glm::vec3 sample_bilinear(const EquirectView& m, const glm::vec2& uv) {
     const float x = uv.x * float(m.width) - 0.5f, y = uv.y * float(m.height) - 0.5f;
     const float fx0 = std::floor(x), fy0 = std::floor(y);
     const float ax = x - fx0, ay = y - fy0;
@@ -78,9 +96,9 @@ inline glm::vec3 environment_specular(const EnvironmentLighting& e, const glm::v
     const float lod = std::clamp(roughness * float(EnvironmentLighting::kLevels - 1), 0.0f, float(EnvironmentLighting::kLevels - 1));
     const int l0 = int(lod);
     const float f = lod - float(l0);
-    const glm::vec3 a = sample_bilinear(e.specular[size_t(l0)], uv);
+    const glm::vec3 a = sample_bilinear(e.specular_level(l0), uv);
     if (l0 + 1 >= EnvironmentLighting::kLevels) return a;
-    return a * (1.0f - f) + sample_bilinear(e.specular[size_t(l0 + 1)], uv) * f;
+    return a * (1.0f - f) + sample_bilinear(e.specular_level(l0 + 1), uv) * f;
 }
 
 // A and B at (N.V, roughness), bilinear with the edges clamped (GL_CLAMP_TO_EDGE).
@@ -106,6 +124,13 @@ inline glm::vec3 environment_light(const EnvironmentLighting& e, const glm::vec3
     const glm::vec3 diffuse = c_diff * environment_irradiance(e, n) * (1.0f - k);
     return (diffuse + environment_specular(e, r, roughness) * k) * (occlusion * e.intensity);
 }
+
+// environment_light for eight fragments at once (environment_lanes.cpp), lane by lane the
+// same operations in the same order, so each lane has the bits environment_light gives.
+// (The vectors by reference: the function is called from both CPU paths, simd.h.)
+void environment_light8(const EnvironmentLighting& e, const simd::vec3x8& c_diff, const simd::vec3x8& f0, const simd::vec3x8& n,
+                        const simd::vec3x8& v, const simd::f8& nv, const simd::f8& roughness, const simd::f8& occlusion,
+                        simd::vec3x8& out);
 
 // Reads an .hdr (Radiance) or .exr picture as an equirectangular environment. Throws
 // InputError naming the file for a missing, truncated or corrupt one.

@@ -238,13 +238,10 @@ struct SurfaceShader {
             const f8& k = vis[size_t(light.shadow)];
             add({c.x * k, c.y * k, c.z * k}, l);
         }
-        if (u->environment) {  // one fragment at a time: a handful of table lookups each
-            for (int i = 0; i < kLanes; ++i) {
-                const glm::vec3 e = environment_light(*u->environment, {s.diffuse.x[i], s.diffuse.y[i], s.diffuse.z[i]},
-                                                      {s.f0.x[i], s.f0.y[i], s.f0.z[i]}, {n.x[i], n.y[i], n.z[i]}, {v.x[i], v.y[i], v.z[i]},
-                                                      nv[i], clamped_roughness[i], occlusion[i]);
-                rgb.x[i] += e.x, rgb.y[i] += e.y, rgb.z[i] += e.z;
-            }
+        if (u->environment) {
+            vec3x8 e;
+            environment_light8(*u->environment, s.diffuse, s.f0, n, v, nv, clamped_roughness, occlusion, e);
+            rgb.x += e.x, rgb.y += e.y, rgb.z += e.z;
         }
         return {rgb.x + emissive.x, rgb.y + emissive.y, rgb.z + emissive.z};
     }
