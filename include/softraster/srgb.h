@@ -46,9 +46,9 @@ inline float decode(uint8_t k) { return tables().decode[k]; }
 // decode(c) for any c in [0, 1], computed in double precision.
 float decode_value(double c);
 
-// The stored 8-bit value of linear l (NaN gives 0).
-inline uint8_t encode(float l) {
-    const Tables& t = tables();
+// The stored 8-bit value of linear l (NaN gives 0), with t = tables() (a caller encoding
+// many values reads it once).
+inline uint8_t encode(const Tables& t, float l) {
     if (!(l > 0.0f)) return 0;
     if (l >= 1.0f) return 255;
     int b = int(std::bit_cast<uint32_t>(l) >> 16) - Tables::kFirstBucket;
@@ -56,6 +56,7 @@ inline uint8_t encode(float l) {
     const int k = t.bucket_start[size_t(b)];
     return uint8_t(l >= t.threshold[size_t(k) + 1] ? k + 1 : k);
 }
+inline uint8_t encode(float l) { return encode(tables(), l); }
 
 // Eight lanes, each as encode() computes it, into `out`. (Vectors by reference: see
 // tone_mapping.h.)

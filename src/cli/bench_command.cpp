@@ -36,7 +36,7 @@ int run_bench(const BenchOptions& opt) {
         stats = renderer.render(*fb);
         // With MSAA the resolve is part of every frame (llvmpipe's timing blits to a
         // resolve buffer too); single-sampled, the framebuffer already is the picture.
-        if (fb->samples() > 1) resolve(*fb, picture);
+        if (fb->samples() > 1) resolve(*fb, picture, renderer.pool());
         if (scene.supersample > 1) picture = downsample_box(fb->samples() > 1 ? picture : fb->read_pixels(), scene.supersample);
         const double dt = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         if (i >= opt.warmup) ms.push_back(dt);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "softraster/pipeline/resolve.h"
+#include "softraster/worker_pool.h"
 
 namespace softraster {
 namespace {
@@ -12,39 +13,49 @@ namespace {
 // The sRGB mean of n stored colors: r, g, b decoded, averaged and encoded (in the order
 // given, a sum then a multiplication); alpha as in a linear buffer.
 template <class At>
-Rgba8 srgb_mean(unsigned n, At&& at) {
+Rgba8 srgb_mean(const srgb::Tables& t, unsigned n, At&& at) {
     float sum[3] = {0, 0, 0};
     unsigned alpha = n / 2;
     for (unsigned i = 0; i < n; ++i) {
         const Rgba8 c = at(i);
-        sum[0] += srgb::decode(c.r), sum[1] += srgb::decode(c.g), sum[2] += srgb::decode(c.b);
+        sum[0] += t.decode[c.r], sum[1] += t.decode[c.g], sum[2] += t.decode[c.b];
         alpha += c.a;
     }
     const float inv = 1.0f / float(n);
-    return {srgb::encode(sum[0] * inv), srgb::encode(sum[1] * inv), srgb::encode(sum[2] * inv), uint8_t(alpha / n)};
+    return {srgb::encode(t, sum[0] * inv), srgb::encode(t, sum[1] * inv), srgb::encode(t, sum[2] * inv), uint8_t(alpha / n)};
 }
 
-}  // namespace
+// Whether the n samples of a pixel are one color, as inside a triangle: their mean is that
+// color in either color space (the sRGB mean of n equal values encodes back to the value,
+// which Resolve.EqualSamplesKeepTheirColor checks for every value and count).
+bool all_equal(const uint32_t* s, unsigned n) {
+    uint32_t differ = 0;
+    for (unsigned i = 1; i < n; ++i) differ |= s[i] ^ s[0];
+    return differ == 0;
+}
 
-void resolve(const Framebuffer& fb, Image& img) {
-    if (img.width != fb.width() || img.height != fb.height()) img = Image(fb.width(), fb.height());
-    const size_t pixels = img.pixels.size();
-    if (fb.samples() == 1) {  // nothing to average
-        std::copy(fb.color_data(), fb.color_data() + pixels, img.pixels.begin());
-        return;
-    }
+// Pixels [begin, end) of the picture.
+void resolve_pixels(const Framebuffer& fb, Image& img, size_t begin, size_t end) {
+    const auto n = unsigned(fb.samples());
+    const auto* words = reinterpret_cast<const uint32_t*>(fb.color_data());
+    auto* out = reinterpret_cast<uint32_t*>(img.pixels.data());
+    static_assert(sizeof(Rgba8) == 4);
     if (fb.srgb()) {
-        const auto n = unsigned(fb.samples());
+        const srgb::Tables& t = srgb::tables();
         const Rgba8* c = fb.color_data();
-        for (size_t p = 0; p < pixels; ++p, c += n) img.pixels[p] = srgb_mean(n, [&](unsigned i) { return c[i]; });
+        for (size_t p = begin; p < end; ++p) {
+            const uint32_t* s = words + n * p;
+            if (all_equal(s, n)) out[p] = s[0];
+            else img.pixels[p] = srgb_mean(t, n, [&](unsigned i) { return c[n * p + i]; });
+        }
         return;
     }
-    if (fb.samples() != 4) {  // 2, 8, 16: the same rounding, channel by channel
-        const auto n = unsigned(fb.samples());
+    if (n != 4) {  // 2, 8, 16: the same rounding, channel by channel
         const Rgba8* c = fb.color_data();
-        for (size_t p = 0; p < pixels; ++p, c += n) {
+        for (size_t p = begin; p < end; ++p) {
+            const Rgba8* s = c + n * p;
             unsigned sum[4] = {n / 2, n / 2, n / 2, n / 2};
-            for (unsigned i = 0; i < n; ++i) sum[0] += c[i].r, sum[1] += c[i].g, sum[2] += c[i].b, sum[3] += c[i].a;
+            for (unsigned i = 0; i < n; ++i) sum[0] += s[i].r, sum[1] += s[i].g, sum[2] += s[i].b, sum[3] += s[i].a;
             img.pixels[p] = {uint8_t(sum[0] / n), uint8_t(sum[1] / n), uint8_t(sum[2] / n), uint8_t(sum[3] / n)};
         }
         return;
@@ -52,10 +63,7 @@ void resolve(const Framebuffer& fb, Image& img) {
     // 4x: average each channel of the four samples, floor(mean + 0.5) = (sum + 2) >> 2. The
     // four RGBA8 samples are four 32-bit words; channels 0 and 2, and 1 and 3, are summed two
     // at a time in 16-bit lanes (SIMD within a register).
-    const auto* words = reinterpret_cast<const uint32_t*>(fb.color_data());
-    auto* out = reinterpret_cast<uint32_t*>(img.pixels.data());
-    static_assert(sizeof(Rgba8) == 4);
-    for (size_t p = 0; p < pixels; ++p) {
+    for (size_t p = begin; p < end; ++p) {
         const uint32_t* s = words + 4 * p;
         uint32_t even = 0x00020002u, odd = 0x00020002u;  // + 2 for rounding
         for (int i = 0; i < 4; ++i) {
@@ -66,6 +74,24 @@ void resolve(const Framebuffer& fb, Image& img) {
     }
 }
 
+}  // namespace
+
+void resolve(const Framebuffer& fb, Image& img, WorkerPool* pool) {
+    if (img.width != fb.width() || img.height != fb.height()) img = Image(fb.width(), fb.height());
+    const size_t pixels = img.pixels.size();
+    if (fb.samples() == 1) {  // nothing to average
+        std::copy(fb.color_data(), fb.color_data() + pixels, img.pixels.begin());
+        return;
+    }
+    // In bands of rows, one band per item (each pixel's result is its own: the same picture
+    // for any number of threads).
+    constexpr size_t kBandRows = 16;
+    const size_t band = kBandRows * size_t(fb.width()), bands = (pixels + band - 1) / band;
+    auto run = [&](size_t b, unsigned) { resolve_pixels(fb, img, b * band, std::min(pixels, (b + 1) * band)); };
+    if (pool) pool->parallel_for(bands, run);
+    else for (size_t b = 0; b < bands; ++b) run(b, 0);
+}
+
 Image downsample_box(const Image& in, int k, ColorSpace color) {
     if (k == 1) return in;
     Image out(in.width / k, in.height / k);
@@ -73,7 +99,7 @@ Image downsample_box(const Image& in, int k, ColorSpace color) {
     for (int y = 0; y < out.height; ++y)
         for (int x = 0; x < out.width; ++x) {
             if (color == ColorSpace::Srgb) {
-                out.pixels[size_t(y) * size_t(out.width) + size_t(x)] = srgb_mean(n, [&](unsigned i) {
+                out.pixels[size_t(y) * size_t(out.width) + size_t(x)] = srgb_mean(srgb::tables(), n, [&](unsigned i) {
                     return in.pixels[size_t(y * k + int(i) / k) * size_t(in.width) + size_t(x * k + int(i) % k)];
                 });
                 continue;

@@ -370,7 +370,8 @@ bool SceneRenderer::fits(const Framebuffer& fb) const {
 }
 
 Image SceneRenderer::resolve(const Framebuffer& fb) const {
-    Image picture = fb.read_pixels();
+    Image picture;
+    softraster::resolve(fb, picture, pool_.get());
     if (occlusion_) {
         const Framebuffer& depth = occlusion_->pass.fb;
         apply_ambient_occlusion(

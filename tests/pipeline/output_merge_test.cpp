@@ -343,24 +343,6 @@ TEST(Blend, SrgbBlendsInLinearLight) {
     EXPECT_EQ(fb.color_data()[3], (Rgba8{188, 188, 188, 128}));
 }
 
-// The sRGB resolve and the supersampling filter average in linear light: half the samples
-// white and half black resolve to 188 (linear buffers: 128).
-TEST(Resolve, SrgbAveragesInLinearLight) {
-    for (int n : {2, 4, 8, 16}) {
-        for (ColorSpace space : {ColorSpace::Linear, ColorSpace::Srgb}) {
-            Framebuffer fb(3, 1, n, space);
-            for (int s = 0; s < n; ++s) fb.color_data()[fb.sample_index(1, 0, s)] = s % 2 ? Rgba8{255, 255, 255, 255} : Rgba8{0, 0, 0, 0};
-            const Image img = fb.read_pixels();
-            EXPECT_EQ(img.at(1, 0), space == ColorSpace::Srgb ? (Rgba8{188, 188, 188, 128}) : (Rgba8{128, 128, 128, 128})) << n;
-            EXPECT_EQ(img.at(0, 0), (Rgba8{}));
-        }
-    }
-    Image big(2, 2);
-    big.at(0, 0) = big.at(1, 1) = {255, 255, 255, 255};
-    EXPECT_EQ(downsample_box(big, 2, ColorSpace::Srgb).at(0, 0), (Rgba8{188, 188, 188, 128}));
-    EXPECT_EQ(downsample_box(big, 2).at(0, 0), (Rgba8{128, 128, 128, 128}));
-}
-
 // Every back end stores an sRGB framebuffer's colors the same way: the fast one at 1 and 4
 // samples, the general one (a stencil test; 8 samples) and blending (general, linear light).
 TEST(Blend, SrgbFramebufferThroughEveryBackEnd) {

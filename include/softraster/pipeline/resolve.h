@@ -5,11 +5,14 @@
 
 namespace softraster {
 
+class WorkerPool;
+
 // Writes the picture of `fb` into `out` (resized to fit): each channel of a pixel is
 // floor(mean + 0.5) of its samples' 8-bit values; a copy when single-sampled. In an sRGB
 // framebuffer r, g, b are averaged in linear light: the decoded samples' mean, encoded.
 // Framebuffer::read_pixels() is this into a new Image; reusing `out` saves allocating it.
-void resolve(const Framebuffer& fb, Image& out);
+// With a pool, its threads share the rows.
+void resolve(const Framebuffer& fb, Image& out, WorkerPool* pool = nullptr);
 
 // Supersampling's resolve: each pixel of the result is the box-filtered k x k block of `in`
 // (whose size is k times the result's), each channel floor(mean + 0.5) of the block's values

@@ -47,6 +47,8 @@ public:
     Image render() const;
 
     const Scene& scene() const { return scene_; }
+    // Its threads (null with one): for the work around a frame, such as resolve(fb, out, pool).
+    WorkerPool* pool() const { return pool_.get(); }
     size_t triangle_count() const;
 
     // One object, ready to draw.
