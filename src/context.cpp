@@ -95,7 +95,7 @@ void Context::execute() {
         const std::span<Command* const> draws(tile_commands_.data() + tile_first_[tile], tile_first_[tile + 1] - tile_first_[tile]);
         uint64_t& count = shaded[thread].n;
         for (size_t c = 0; c < draws.size();) {
-            const auto [end, worth_it] = hidden_surface_run(draws, c, int(tile), rect);
+            const auto [end, worth_it] = hidden_surface_run(draws, c, int(tile), rect, fb_->samples());
             if (!worth_it) {
                 for (; c < end; ++c) count += draws[c]->draw_tile(int(tile), rect, target);
                 continue;

@@ -47,3 +47,33 @@ TEST(HiddenSurfaceRemoval, SamePictureAsDrawingEverything) {
             EXPECT_LT(two_pass.shaded, plain.shaded);  // and it did save shading
         }
 }
+
+// Which runs take two passes: several draws whose bounds cover the tile 2.5 times over, or 8
+// times with MSAA (whose second pass shades a pixel at a time).
+TEST(HiddenSurfaceRemoval, RunsWorthTwoPasses) {
+    struct Draw {
+        double area;
+        bool allows = true;
+        bool allows_hidden_surface_removal() const { return allows; }
+        uint32_t triangles_in_tile(int) const { return 1; }
+        double covered_area(int) const { return area; }
+    };
+    const Rect tile{0, 0, 64, 64};
+    const double full = 64.0 * 64.0;
+    auto run = [&](std::vector<Draw>& draws, int samples) {
+        std::vector<const Draw*> ptrs;
+        for (const Draw& d : draws) ptrs.push_back(&d);
+        return hidden_surface_run(std::span<const Draw* const>(ptrs), 0, 0, tile, samples);
+    };
+    std::vector<Draw> three = {{full}, {full}, {full}};  // overdraw 3
+    EXPECT_TRUE(run(three, 1).worth_it);
+    EXPECT_FALSE(run(three, 4).worth_it);
+    EXPECT_EQ(run(three, 4).end, 3u);
+    std::vector<Draw> eight(8, Draw{full});
+    EXPECT_TRUE(run(eight, 4).worth_it);
+    std::vector<Draw> one = {{10 * full}};  // one draw: nothing between draws to remove
+    EXPECT_FALSE(run(one, 1).worth_it);
+    std::vector<Draw> blended = {{full}, {full}, {full, false}, {full}};  // the run ends at a draw that does not allow it
+    EXPECT_EQ(run(blended, 1).end, 2u);
+    EXPECT_FALSE(run(blended, 1).worth_it);
+}

@@ -36,8 +36,11 @@ inline bool allows_hidden_surface_removal(const RenderState& st) {
            st.depth_func != DepthFunc::Never && !st.scissor_test;
 }
 
-// A run is worth two passes when its triangles' bounds cover the tile this many times over.
-inline constexpr double kOverdrawForHiddenSurfaceRemoval = 2.5;
+// A run is worth two passes when its triangles' bounds cover the tile this many times over;
+// with MSAA, more times: its second pass shades one pixel at a time, where drawing each draw
+// in turn shades eight at once (bench_textured_asset, docs/performance.md "The resolve and
+// MSAA's two passes").
+inline constexpr double kOverdrawForHiddenSurfaceRemoval = 2.5, kOverdrawForHiddenSurfaceRemovalMsaa = 8.0;
 
 // Owner of a sample: draw (within the run) in the top 8 bits, triangle (within the draw's
 // list for the tile) in the low 24.
@@ -51,11 +54,11 @@ struct HiddenSurfaceRun {
 };
 
 // The longest run of the tile's draws from `first` that allow hidden-surface removal, and
-// whether it is worth two passes: several draws, and enough overdraw in this tile. `draws`
-// are the tile's commands in draw order (pointers with allows_hidden_surface_removal(),
-// triangles_in_tile(tile) and covered_area(tile)).
+// whether it is worth two passes: several draws, and enough overdraw in this tile for the
+// framebuffer's sample count. `draws` are the tile's commands in draw order (pointers with
+// allows_hidden_surface_removal(), triangles_in_tile(tile) and covered_area(tile)).
 template <class DrawPtr>
-HiddenSurfaceRun hidden_surface_run(std::span<const DrawPtr> draws, size_t first, int tile, const Rect& rect) {
+HiddenSurfaceRun hidden_surface_run(std::span<const DrawPtr> draws, size_t first, int tile, const Rect& rect, int samples) {
     size_t end = first;
     while (end < draws.size() && end - first < kMaxRunDraws && draws[end]->allows_hidden_surface_removal() &&
            draws[end]->triangles_in_tile(tile) < kMaxTileTriangles)
@@ -65,7 +68,8 @@ HiddenSurfaceRun hidden_surface_run(std::span<const DrawPtr> draws, size_t first
     double area = 0;
     for (size_t c = first; c < end; ++c) area += draws[c]->covered_area(tile);
     const double tile_area = double(rect.x1 - rect.x0) * double(rect.y1 - rect.y0);
-    return {end, area >= kOverdrawForHiddenSurfaceRemoval * tile_area};
+    const double overdraw = samples == 1 ? kOverdrawForHiddenSurfaceRemoval : kOverdrawForHiddenSurfaceRemovalMsaa;
+    return {end, area >= overdraw * tile_area};
 }
 
 // Pass 1 for one triangle: depth test and write, and `me` as the owner of every sample
