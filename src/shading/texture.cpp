@@ -17,6 +17,7 @@ namespace {
 std::vector<Rgba8> downsample(const std::vector<Rgba8>& src, int sw, int sh, int dw, int dh, bool srgb) {
     std::vector<Rgba8> dst(size_t(dw) * size_t(dh));
     const float sx = float(sw) / float(dw), sy = float(sh) / float(dh);
+    const srgb::Tables& t = srgb::tables();
     auto at = [&](int i, int j) {
         i = std::clamp(i, 0, sw - 1), j = std::clamp(j, 0, sh - 1);
         return src[size_t(j) * size_t(sw) + size_t(i)];
@@ -32,7 +33,7 @@ std::vector<Rgba8> downsample(const std::vector<Rgba8>& src, int sw, int sh, int
                 return bottom * (1.0f - fy) + top * fy;
             };
             auto color = [&](uint8_t pa, uint8_t pb, uint8_t pc, uint8_t pd) {
-                if (srgb) return srgb::encode(mix(srgb::decode(pa), srgb::decode(pb), srgb::decode(pc), srgb::decode(pd)));
+                if (srgb) return srgb::encode(t, mix(t.decode[pa], t.decode[pb], t.decode[pc], t.decode[pd]));
                 return uint8_t(std::min(255.0f, std::floor(mix(float(pa), float(pb), float(pc), float(pd)) + 0.5f)));
             };
             const float alpha = mix(float(a.a), float(b.a), float(c.a), float(d.a));
@@ -118,7 +119,9 @@ Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpa
             for (int tx = 0; tx < l.tiles_x; ++tx, tile += kTileTexels)
                 for (int y = 0; y < kTileSide; ++y)
                     for (int x = 0; x < kTileSide; ++x) {
-                        const int i = (4 * tx + x) % l.width, j = (4 * ty + y) % l.height;
+                        int i = 4 * tx + x, j = 4 * ty + y;  // (a division only past the edge)
+                        if (i >= l.width) i %= l.width;
+                        if (j >= l.height) j %= l.height;
                         const Rgba8 t = rows[k][size_t(j) * size_t(l.width) + size_t(i)];
                         tile[y * kTileSide + x] = uint32_t(t.r) | uint32_t(t.g) << 8 | uint32_t(t.b) << 16 | uint32_t(t.a) << 24;
                     }
