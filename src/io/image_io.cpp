@@ -2,7 +2,7 @@
 
 #include "softraster/io/atomic_write.h"
 
-#include <stb_image_write.h>
+#include <png.h>
 
 #include <algorithm>
 #include <cstring>
@@ -226,11 +226,20 @@ Image read_image(std::string_view bytes, const std::string& name, const std::str
     return decode_checked(bytes, nullptr, name, ext);
 }
 
+// Through libpng, into a buffer of the largest size the picture can take (libpng's bound):
+// one pass. (libpng rather than stb_image_write: about 30% faster, and files about 30%
+// smaller, docs/performance.md "The resolve and MSAA's two passes".)
 std::string encode_png(const Image& image) {
-    std::string out;
-    auto sink = [](void* ctx, void* data, int size) { static_cast<std::string*>(ctx)->append(static_cast<char*>(data), size_t(size)); };
-    if (!stbi_write_png_to_func(sink, &out, image.width, image.height, 4, image.pixels.data(), image.width * 4))
-        throw std::runtime_error("PNG encoding failed");
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = png_uint_32(image.width);
+    png.height = png_uint_32(image.height);
+    png.format = PNG_FORMAT_RGBA;
+    png_alloc_size_t size = PNG_IMAGE_PNG_SIZE_MAX(png);
+    std::string out(size, '\0');
+    if (!png_image_write_to_memory(&png, out.data(), &size, 0, image.pixels.data(), 0, nullptr))
+        throw std::runtime_error(std::string("PNG encoding failed: ") + png.message);
+    out.resize(size);
     return out;
 }
 

@@ -1,6 +1,7 @@
 #include "softraster/io/image_write.h"
 
 #include "softraster/io/atomic_write.h"
+#include "softraster/io/image_io.h"
 
 #include <png.h>
 #include <stb_image_write.h>
@@ -59,6 +60,19 @@ void write_exr(int width, int height, const std::vector<std::pair<const char*, c
     });
 }
 
+// A gray or 16-bit PNG through libpng's simplified API (an RGBA picture: image_io.h's
+// write_png): 8-bit formats as given, the LINEAR ones as 16-bit values.
+void write_png_file(const std::filesystem::path& path, int width, int height, png_uint_32 format, const void* pixels) {
+    write_atomically(path, [&](const std::string& tmp) {
+        png_image png{};
+        png.version = PNG_IMAGE_VERSION;
+        png.width = png_uint_32(width);
+        png.height = png_uint_32(height);
+        png.format = format;
+        if (!png_image_write_to_file(&png, tmp.c_str(), 0, pixels, 0, nullptr)) throw std::runtime_error(path.string() + ": " + png.message);
+    });
+}
+
 }  // namespace
 
 std::optional<PictureFormat> picture_format(const std::filesystem::path& path) {
@@ -76,12 +90,12 @@ void write_picture(const Image& image, const std::filesystem::path& path, ColorS
     if (!format) throw std::runtime_error(path.string() + ": unknown picture format (use .png, .tga, .ppm or .exr)");
     switch (*format) {
         case PictureFormat::Png:
+            write_png(image, path);
+            return;
         case PictureFormat::Tga:
             write_atomically(path, [&](const std::string& tmp) {
-                const int ok = *format == PictureFormat::Png
-                                   ? stbi_write_png(tmp.c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4)
-                                   : stbi_write_tga(tmp.c_str(), image.width, image.height, 4, image.pixels.data());
-                if (!ok) throw std::runtime_error(path.string() + ": write failed");
+                if (!stbi_write_tga(tmp.c_str(), image.width, image.height, 4, image.pixels.data()))
+                    throw std::runtime_error(path.string() + ": write failed");
             });
             return;
         case PictureFormat::Ppm:
@@ -116,23 +130,12 @@ void write_picture(const Image& image, const std::filesystem::path& path, ColorS
 
 void write_gray(const GrayImage<uint8_t>& image, const std::filesystem::path& path) {
     if (picture_format(path) != PictureFormat::Png) throw std::runtime_error(path.string() + ": an 8-bit gray picture is written as .png");
-    write_atomically(path, [&](const std::string& tmp) {
-        if (!stbi_write_png(tmp.c_str(), image.width, image.height, 1, image.values.data(), image.width))
-            throw std::runtime_error(path.string() + ": write failed");
-    });
+    write_png_file(path, image.width, image.height, PNG_FORMAT_GRAY, image.values.data());
 }
 
 void write_gray(const GrayImage<uint16_t>& image, const std::filesystem::path& path) {
     if (picture_format(path) != PictureFormat::Png) throw std::runtime_error(path.string() + ": a 16-bit gray picture is written as .png");
-    write_atomically(path, [&](const std::string& tmp) {
-        png_image png{};
-        png.version = PNG_IMAGE_VERSION;
-        png.width = png_uint_32(image.width);
-        png.height = png_uint_32(image.height);
-        png.format = PNG_FORMAT_LINEAR_Y;  // 16-bit gray, stored as given
-        if (!png_image_write_to_file(&png, tmp.c_str(), 0, image.values.data(), 0, nullptr))
-            throw std::runtime_error(path.string() + ": " + png.message);
-    });
+    write_png_file(path, image.width, image.height, PNG_FORMAT_LINEAR_Y, image.values.data());  // 16-bit gray, stored as given
 }
 
 void write_gray(const GrayImage<float>& image, const std::filesystem::path& path) {
@@ -142,14 +145,7 @@ void write_gray(const GrayImage<float>& image, const std::filesystem::path& path
 
 void write_rgb(int width, int height, const std::vector<uint16_t>& rgb, const std::filesystem::path& path) {
     if (picture_format(path) != PictureFormat::Png) throw std::runtime_error(path.string() + ": a 16-bit RGB picture is written as .png");
-    write_atomically(path, [&](const std::string& tmp) {
-        png_image png{};
-        png.version = PNG_IMAGE_VERSION;
-        png.width = png_uint_32(width);
-        png.height = png_uint_32(height);
-        png.format = PNG_FORMAT_LINEAR_RGB;  // 16-bit RGB, stored as given
-        if (!png_image_write_to_file(&png, tmp.c_str(), 0, rgb.data(), 0, nullptr)) throw std::runtime_error(path.string() + ": " + png.message);
-    });
+    write_png_file(path, width, height, PNG_FORMAT_LINEAR_RGB, rgb.data());  // 16-bit RGB, stored as given
 }
 
 void write_rgb(int width, int height, const std::vector<float>& rgb, const std::filesystem::path& path) {
