@@ -110,8 +110,8 @@ def main():
 
 HEAD = """# Performance
 
-softraster against Mesa llvmpipe on the scenes in `bench/scenes/` (copies of
-`../shared/scenes/bench/`), measured on the same machine, in the same run, interleaved,
+softraster against Mesa llvmpipe on the scenes in `bench/scenes/` (the `make_bench_*.py`
+scripts there write most of them), measured on the same machine, in the same run, interleaved,
 at the same thread count. Lower is better; the target is softraster at most 0.35 of
 llvmpipe's median frame time, and 1.8 times as fast with two threads as with one.
 
