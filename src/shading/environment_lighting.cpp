@@ -226,11 +226,13 @@ EnvironmentLighting prepare_environment(const EquirectImage& picture, float inte
     std::vector<EquirectImage> pyramid{base_level(picture)};
     while (int(pyramid.size()) < EnvironmentLighting::kLevels) pyramid.push_back(half(pyramid.back()));
     e.irradiance = irradiance(pyramid[0]);
-    e.specular.reserve(size_t(EnvironmentLighting::level_offset(EnvironmentLighting::kLevels)));
+    e.specular.reserve(size_t(EnvironmentLighting::level_offset(EnvironmentLighting::kLevels)) + 2);
     for (int k = 0; k < EnvironmentLighting::kLevels; ++k) {
         const EquirectImage level = k == 0 ? pyramid[0] : prefilter(pyramid, k);
         e.specular.insert(e.specular.end(), level.texels.begin(), level.texels.end());
     }
+    // (Padding: the eight-lane lookup loads a row's two texels and two floats more.)
+    e.specular.insert(e.specular.end(), 2, glm::vec3(0.0f));
     e.lut = brdf_lut();
     return e;
 }

@@ -48,8 +48,8 @@ struct EnvironmentLighting {
     // E(N)/pi = k0 + k1 y + k2 z + k3 x + k4 xy + k5 yz + k6 (3 z^2 - 1) + k7 xz + k8 (x^2 - y^2)
     std::array<glm::vec3, 9> irradiance{};
     // The specular levels one after another, level k ((256 >> k) x (128 >> k)) from texel
-    // level_offset(k) on: in one array, eight lanes on different levels read it with one
-    // gather (environment_lanes.cpp).
+    // level_offset(k) on, and two texels of padding: in one array, eight lanes on different
+    // levels read it with one load each (environment_lanes.cpp).
     std::vector<glm::vec3> specular;
     static constexpr int level_offset(int k) {
         int at = 0;
