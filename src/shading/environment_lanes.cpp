@@ -100,6 +100,8 @@ template <>
 }
 #endif
 
+vec3x8 select3(const i8& mask, const vec3x8& a, const vec3x8& b) { return {select(mask, a.x, b.x), select(mask, a.y, b.y), select(mask, a.z, b.z)}; }
+
 vec3x8 mix(const vec3x8& a, const vec3x8& b, const f8& t) {  // a (1 - t) + b t, as glm's vec3 * float
     const f8 s = 1.0f - t;
     return {a.x * s + b.x * t, a.y * s + b.y * t, a.z * s + b.z * t};
@@ -136,10 +138,8 @@ vec3x8 specular_bilinear(const EnvironmentLighting& e, const i8& l, const f8& u,
     load_pairs<Wide>(e.specular.data(), bottom + left, corner[2], corner[3]);
     const i8 wrapped = right != left + 1;
     if (simd::any(wrapped)) {
-        const vec3x8 top_right = gather_texels<Wide>(e.specular.data(), top + right), bottom_right = gather_texels<Wide>(e.specular.data(), bottom + right);
-        auto fix = [&](vec3x8& c, const vec3x8& by) { c = {select(wrapped, by.x, c.x), select(wrapped, by.y, c.y), select(wrapped, by.z, c.z)}; };
-        fix(corner[1], top_right);
-        fix(corner[3], bottom_right);
+        corner[1] = select3(wrapped, gather_texels<Wide>(e.specular.data(), top + right), corner[1]);
+        corner[3] = select3(wrapped, gather_texels<Wide>(e.specular.data(), bottom + right), corner[3]);
     }
     return mix(mix(corner[0], corner[1], ax), mix(corner[2], corner[3], ax), ay);
 }
@@ -192,9 +192,8 @@ void light8(const EnvironmentLighting& e, const vec3x8& c_diff, const vec3x8& f0
     const vec3x8 s0 = specular_bilinear<Wide>(e, l0, u, t);
     vec3x8 s = s0;
     if (simd::any(l0 < kLast)) {
-        const vec3x8 s1 = specular_bilinear<Wide>(e, l1, u, t), both = mix(s0, s1, f);
-        const i8 last_level = l0 >= kLast;
-        s = {select(last_level, s0.x, both.x), select(last_level, s0.y, both.y), select(last_level, s0.z, both.z)};
+        const vec3x8 s1 = specular_bilinear<Wide>(e, l1, u, t);
+        s = select3(l0 >= kLast, s0, mix(s0, s1, f));
     }
 
     const f8 scale = occlusion * e.intensity;

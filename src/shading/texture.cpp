@@ -17,7 +17,7 @@ namespace {
 std::vector<Rgba8> downsample(const std::vector<Rgba8>& src, int sw, int sh, int dw, int dh, bool srgb) {
     std::vector<Rgba8> dst(size_t(dw) * size_t(dh));
     const float sx = float(sw) / float(dw), sy = float(sh) / float(dh);
-    const srgb::Tables& t = srgb::tables();
+    const srgb::Tables& tables = srgb::tables();
     auto at = [&](int i, int j) {
         i = std::clamp(i, 0, sw - 1), j = std::clamp(j, 0, sh - 1);
         return src[size_t(j) * size_t(sw) + size_t(i)];
@@ -33,7 +33,7 @@ std::vector<Rgba8> downsample(const std::vector<Rgba8>& src, int sw, int sh, int
                 return bottom * (1.0f - fy) + top * fy;
             };
             auto color = [&](uint8_t pa, uint8_t pb, uint8_t pc, uint8_t pd) {
-                if (srgb) return srgb::encode(t, mix(t.decode[pa], t.decode[pb], t.decode[pc], t.decode[pd]));
+                if (srgb) return srgb::encode(tables, mix(tables.decode[pa], tables.decode[pb], tables.decode[pc], tables.decode[pd]));
                 return uint8_t(std::min(255.0f, std::floor(mix(float(pa), float(pb), float(pc), float(pd)) + 0.5f)));
             };
             const float alpha = mix(float(a.a), float(b.a), float(c.a), float(d.a));
