@@ -18,7 +18,11 @@ using simd::f8, simd::i8, simd::vec3x8, simd::splat, simd::splat_i, simd::select
 
 // std::clamp(x, lo, hi) lane by lane: lo where x < lo, hi where hi < x, else x (a NaN stays).
 f8 clamp_as_std(f8 x, float lo, float hi) { return select(x < lo, splat(lo), select(hi < x, splat(hi), x)); }
-i8 clamp_index(i8 i, i8 hi) { return select(i < 0, splat_i(0), select(i > hi, hi, i)); }
+// Texel indices clamped to [0, n) and wrapped around a row of n, as textures have them
+// (lanes::wrap_texel8). The wrap expects [-n, 2n); what is outside it (a NaN coordinate's
+// index) the clamp then keeps in the row.
+i8 clamp_index(const i8& i, const i8& n) { return lanes::wrap_texel8<false>(i, n, Wrap::Clamp); }
+i8 wrap_index(const i8& i, const i8& n) { return clamp_index(lanes::wrap_texel8<false>(i, n, Wrap::Repeat), n); }
 
 // out[k] = base[index[k]], the floats of base by their index.
 template <bool Wide>
@@ -129,9 +133,8 @@ vec3x8 specular_bilinear(const EnvironmentLighting& e, const i8& l, const f8& u,
     split<Wide>(u * simd::to_float(w) - 0.5f, ax, i0);
     split<Wide>(v * simd::to_float(h) - 0.5f, ay, j0);
     // i0 is in [-1, w - 1] for u in [0, 1]: the one-lane code's modulo is one wrap here.
-    auto wrap = [&](i8 i) { return clamp_index(select(i < 0, i + w, select(i >= w, i - w, i)), w - 1); };
-    const i8 left = wrap(i0), right = wrap(i0 + 1);
-    const i8 top = offset + clamp_index(j0, h - 1) * w, bottom = offset + clamp_index(j0 + 1, h - 1) * w;
+    const i8 left = wrap_index(i0, w), right = wrap_index(i0 + 1, w);
+    const i8 top = offset + clamp_index(j0, h) * w, bottom = offset + clamp_index(j0 + 1, h) * w;
     // The two texels of a row side by side in memory, but where the right one wrapped around.
     vec3x8 corner[4];
     load_pairs<Wide>(e.specular.data(), top + left, corner[0], corner[1]);
@@ -152,7 +155,6 @@ void light8(const EnvironmentLighting& e, const vec3x8& c_diff, const vec3x8& f0
     const vec3x8 r{twice * n.x - v.x, twice * n.y - v.y, twice * n.z - v.z};
     f8 u, t;
     angles<Wide>(r.x, -r.z, clamp_as_std(r.y, -1.0f, 1.0f), u, t);
-    constexpr float kInvTwoPi = 0.159154943091895f, kInvPi = 0.318309886183791f;
     u = 0.5f + u * kInvTwoPi, t = t * kInvPi;
 
     // A and B (environment_brdf): four texels of the table, clamped to its edges.
@@ -161,9 +163,9 @@ void light8(const EnvironmentLighting& e, const vec3x8& c_diff, const vec3x8& f0
     i8 bi, bj;
     split<Wide>(nv * float(kLut) - 0.5f, bx, bi);
     split<Wide>(roughness * float(kLut) - 0.5f, by, bj);
-    const i8 last = splat_i(kLut - 1);
-    const i8 row0 = clamp_index(bj, last) * kLut, row1 = clamp_index(bj + 1, last) * kLut;
-    const i8 col0 = clamp_index(bi, last), col1 = clamp_index(bi + 1, last);
+    const i8 size = splat_i(kLut);
+    const i8 row0 = clamp_index(bj, size) * kLut, row1 = clamp_index(bj + 1, size) * kLut;
+    const i8 col0 = clamp_index(bi, size), col1 = clamp_index(bi + 1, size);
     const float* lut = &e.lut.data()->x;
     auto lut_at = [&](const i8& k) { return std::array<f8, 2>{gather_floats<Wide>(lut, k * 2), gather_floats<Wide>(lut + 1, k * 2)}; };
     const auto c00 = lut_at(row0 + col0), c10 = lut_at(row0 + col1), c01 = lut_at(row1 + col0), c11 = lut_at(row1 + col1);
@@ -186,7 +188,7 @@ void light8(const EnvironmentLighting& e, const vec3x8& c_diff, const vec3x8& f0
     // S(R, roughness) (environment_specular): two levels, or the last alone.
     constexpr int kLast = EnvironmentLighting::kLevels - 1;
     const f8 lod = clamp_as_std(roughness * float(kLast), 0.0f, float(kLast));
-    const i8 l0 = clamp_index(simd::to_int(select(lod == lod, lod, splat(0.0f))), splat_i(kLast));
+    const i8 l0 = clamp_index(simd::to_int(select(lod == lod, lod, splat(0.0f))), splat_i(kLast + 1));
     const f8 f = lod - simd::to_float(l0);
     const i8 l1 = select(l0 < kLast, l0 + 1, l0);
     const vec3x8 s0 = specular_bilinear<Wide>(e, l0, u, t);

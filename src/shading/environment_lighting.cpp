@@ -214,7 +214,6 @@ bool radiance_complete(const std::string& b, int w, int h) {
 }  // namespace
 
 glm::vec2 equirect_uv(const glm::vec3& d) {
-    constexpr float kInvTwoPi = 0.159154943091895f, kInvPi = 0.318309886183791f;
     return {0.5f + Sleef_cinz_atan2f1_u10purec(d.x, -d.z) * kInvTwoPi, Sleef_cinz_acosf1_u10purec(std::clamp(d.y, -1.0f, 1.0f)) * kInvPi};
 }
 

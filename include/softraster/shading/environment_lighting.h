@@ -25,15 +25,15 @@
 
 namespace softraster {
 
-// An equirectangular picture: texel (i, j) of a w x h picture is seen in the direction
-// (sin t sin p, cos t, -sin t cos p), p = 2 pi ((i + 1/2)/w - 1/2), t = pi (j + 1/2)/h:
-// row 0 looks up (+y), the middle of the picture looks down -z.
-// A picture held elsewhere (one level of the specular chain below), read the same way.
+// A picture held elsewhere (one level of the specular chain below), read as EquirectImage.
 struct EquirectView {
     const glm::vec3* texels = nullptr;  // row by row from the top
     int width = 0, height = 0;
     const glm::vec3& at(int i, int j) const { return texels[size_t(j) * size_t(width) + size_t(i)]; }
 };
+// An equirectangular picture: texel (i, j) of a w x h picture is seen in the direction
+// (sin t sin p, cos t, -sin t cos p), p = 2 pi ((i + 1/2)/w - 1/2), t = pi (j + 1/2)/h:
+// row 0 looks up (+y), the middle of the picture looks down -z.
 struct EquirectImage {
     int width = 0, height = 0;
     std::vector<glm::vec3> texels;  // row by row from the top
@@ -68,6 +68,7 @@ struct EnvironmentLighting {
 // that give the same bits on every instruction set (its "cinz" ones, within 1 ulp), so that
 // eight lanes at once (environment_lanes.cpp) give what one at a time gives here.
 glm::vec2 equirect_uv(const glm::vec3& d);
+inline constexpr float kInvTwoPi = 0.159154943091895f, kInvPi = 0.318309886183791f;  // (its scales)
 
 // GL's bilinear filter at uv: across wraps around (GL_REPEAT), down is clamped to the edge.
 inline glm::vec3 sample_bilinear(const EquirectView& m, const glm::vec2& uv) {
