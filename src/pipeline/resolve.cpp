@@ -96,10 +96,11 @@ Image downsample_box(const Image& in, int k, ColorSpace color) {
     if (k == 1) return in;
     Image out(in.width / k, in.height / k);
     const auto n = unsigned(k * k);
+    const srgb::Tables& tables = srgb::tables();
     for (int y = 0; y < out.height; ++y)
         for (int x = 0; x < out.width; ++x) {
             if (color == ColorSpace::Srgb) {
-                out.pixels[size_t(y) * size_t(out.width) + size_t(x)] = srgb_mean(srgb::tables(), n, [&](unsigned i) {
+                out.pixels[size_t(y) * size_t(out.width) + size_t(x)] = srgb_mean(tables, n, [&](unsigned i) {
                     return in.pixels[size_t(y * k + int(i) / k) * size_t(in.width) + size_t(x * k + int(i) % k)];
                 });
                 continue;
