@@ -24,12 +24,15 @@ Tables make_tables() {
     t.threshold[0] = -std::numeric_limits<float>::infinity();
     t.threshold[256] = std::numeric_limits<float>::infinity();
     for (int k = 1; k < 256; ++k) t.threshold[size_t(k)] = float_at_or_above(decode_exact((k - 0.5) / 255.0));
-    // Each interval's first float, and the number of thresholds it reaches.
+    // Each interval's first float, the number of thresholds it reaches, and the threshold
+    // inside it, if any.
     int k = 0;
     for (int b = 0; b < Tables::kBuckets; ++b) {
-        const float first = std::bit_cast<float>(uint32_t(Tables::kFirstBucket + b) << 16);
-        while (k < 255 && first >= t.threshold[size_t(k) + 1]) ++k;
-        t.bucket_start[size_t(b)] = k;
+        const uint32_t first = uint32_t(Tables::kFirstBucket + b) << 16;
+        while (k < 255 && std::bit_cast<float>(first) >= t.threshold[size_t(k) + 1]) ++k;
+        const uint32_t next = std::bit_cast<uint32_t>(t.threshold[size_t(k) + 1]);  // (+inf past 255)
+        const int low = k < 255 && (next >> 16) == (first >> 16) ? int(next & 0xffffu) : Tables::kNoThreshold;
+        t.bucket[size_t(b)] = (k << 17) | low;
     }
     return t;
 }

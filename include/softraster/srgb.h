@@ -33,12 +33,24 @@ struct Tables {
     // round(65280 decode(k / 255)), 0 to 65280.
     std::array<uint16_t, 256> decode_fixed;
     std::array<float, 257> threshold;  // [k]: the least float >= t_k; [0] = -inf, [256] = +inf
-    // The stored value at the start of each of 13 x 128 intervals of [2^-13, 1): float bit
-    // patterns >> 16 (exponent and 7 bits of mantissa) from that of 2^-13. No interval
-    // holds two thresholds (a unit test checks), so one comparison finishes the job.
+    // The encode's one lookup, for each of 13 x 128 intervals of [2^-13, 1): float bit
+    // patterns >> 16 (exponent and 7 bits of mantissa) from that of 2^-13. No interval holds
+    // two thresholds (a unit test checks), so an entry says all: the stored value k at the
+    // interval's start (bits 17 and up), and the low 16 bits of the threshold the interval
+    // holds, or 2^16 if it holds none (bits 0-16). A value in the interval stores k, plus 1
+    // if its low 16 bits reach the threshold's: positive floats order as their bit patterns.
+    // (One table read, where a value and then the next threshold took two dependent ones.)
     static constexpr int kFirstBucket = 114 << 7;  // (bits of 2^-13) >> 16
     static constexpr int kBuckets = 13 << 7;
-    std::array<int32_t, kBuckets> bucket_start;
+    static constexpr int kNoThreshold = 1 << 16;
+    std::array<int32_t, kBuckets> bucket;
+    // The interval of a value in [0, 1]: below 2^-13, the first one, which holds no
+    // threshold (a unit test checks); 1 in the last, which holds none either.
+    static int bucket_of(uint32_t bits) {
+        const int b = int(bits >> 16) - kFirstBucket;
+        return b < 0 ? 0 : b >= kBuckets ? kBuckets - 1 : b;
+    }
+    static int stored(int32_t entry, uint32_t bits) { return (entry >> 17) + (int(bits & 0xffffu) >= (entry & 0x1ffff) ? 1 : 0); }
 };
 const Tables& tables();
 
@@ -51,36 +63,33 @@ float decode_value(double c);
 inline uint8_t encode(const Tables& t, float l) {
     if (!(l > 0.0f)) return 0;
     if (l >= 1.0f) return 255;
-    int b = int(std::bit_cast<uint32_t>(l) >> 16) - Tables::kFirstBucket;
-    b = b < 0 ? 0 : b;  // (l < 1: b < kBuckets)
-    const int k = t.bucket_start[size_t(b)];
-    return uint8_t(l >= t.threshold[size_t(k) + 1] ? k + 1 : k);
+    const uint32_t bits = std::bit_cast<uint32_t>(l);
+    return uint8_t(Tables::stored(t.bucket[size_t(Tables::bucket_of(bits))], bits));
 }
 inline uint8_t encode(float l) { return encode(tables(), l); }
 
 // Eight lanes, each as encode() computes it, into `out`. (Vectors by reference: see
 // tone_mapping.h.)
 inline void encode(const simd::f8& linear, simd::i8& out) {
-    using simd::i8;
     const Tables& t = tables();
     const simd::f8 l = simd::clamp01(linear);  // NaN -> 0; 1 lands in the last interval
-    i8 b = (std::bit_cast<i8>(l) >> 16) - Tables::kFirstBucket;
-    b = simd::select(b < 0, simd::splat_i(0), simd::select(b >= Tables::kBuckets, simd::splat_i(Tables::kBuckets - 1), b));
     for (int lane = 0; lane < simd::kLanes; ++lane) {
-        const int k = t.bucket_start[size_t(b[lane])];
-        out[lane] = l[lane] >= t.threshold[size_t(k) + 1] ? k + 1 : k;
+        const uint32_t bits = std::bit_cast<uint32_t>(l[lane]);
+        out[lane] = Tables::stored(t.bucket[size_t(Tables::bucket_of(bits))], bits);
     }
 }
 #if SOFTRASTER_HAS_AVX2_PATH
-// The same with two gathers for the lanes' table lookups (t: tables(), read once by the
+// The same with one gather for the lanes' table entries (t: tables(), read once by the
 // caller for its channels). max(l, 0) takes the second operand, 0, for a NaN, as clamp01.
 [[gnu::target("avx2")]] inline void encode_avx2(const Tables& t, const simd::f8& linear, simd::i8& out) {
-    const __m256 l = _mm256_min_ps(_mm256_max_ps(__m256(linear), _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
-    __m256i b = _mm256_sub_epi32(_mm256_srli_epi32(_mm256_castps_si256(l), 16), _mm256_set1_epi32(Tables::kFirstBucket));
+    const __m256i bits = _mm256_castps_si256(_mm256_min_ps(_mm256_max_ps(__m256(linear), _mm256_setzero_ps()), _mm256_set1_ps(1.0f)));
+    __m256i b = _mm256_sub_epi32(_mm256_srli_epi32(bits, 16), _mm256_set1_epi32(Tables::kFirstBucket));
     b = _mm256_min_epi32(_mm256_max_epi32(b, _mm256_setzero_si256()), _mm256_set1_epi32(Tables::kBuckets - 1));
-    const __m256i k = _mm256_i32gather_epi32(t.bucket_start.data(), b, 4);
-    const __m256 next = _mm256_i32gather_ps(t.threshold.data() + 1, k, 4);
-    out = simd::i8(_mm256_sub_epi32(k, _mm256_castps_si256(_mm256_cmp_ps(l, next, _CMP_GE_OQ))));  // (a true comparison is -1)
+    const __m256i entry = _mm256_i32gather_epi32(t.bucket.data(), b, 4);
+    const __m256i k = _mm256_srai_epi32(entry, 17), threshold = _mm256_and_si256(entry, _mm256_set1_epi32(0x1ffff));
+    const __m256i low = _mm256_and_si256(bits, _mm256_set1_epi32(0xffff));
+    // k + 1, less 1 where the threshold is past the value (a true comparison is -1).
+    out = simd::i8(_mm256_add_epi32(_mm256_add_epi32(k, _mm256_set1_epi32(1)), _mm256_cmpgt_epi32(threshold, low)));
 }
 #endif
 

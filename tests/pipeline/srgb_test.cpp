@@ -1,6 +1,8 @@
 // sRGB's transfer function (srgb.h) against the formulas evaluated independently in double
 // precision: every 8-bit value decodes to the formula's value, every float encodes to the
 // rounded formula, the eight-lane form agrees, and the tables' shortcut holds everywhere.
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -66,8 +68,30 @@ TEST(Srgb, NoIntervalHoldsTwoThresholds) {
         for (int k = 1; k < 256; ++k) inside += t.threshold[size_t(k)] > lo && t.threshold[size_t(k)] <= hi;
         EXPECT_LE(inside, 1) << b;
     }
-    // Below the first interval every value stores 0.
-    EXPECT_GT(double(t.threshold[1]), std::ldexp(1.0, -13));
+    // Below the first interval every value stores 0, and so does the first interval, whose
+    // entry those values read; 1 reads the last, which holds no threshold either.
+    const float first_end = std::bit_cast<float>((uint32_t(srgb::Tables::kFirstBucket + 1) << 16) - 1);
+    EXPECT_GT(t.threshold[1], first_end);
+    EXPECT_EQ(t.bucket[0], srgb::Tables::kNoThreshold);
+    EXPECT_EQ(t.bucket[srgb::Tables::kBuckets - 1], (255 << 17) | srgb::Tables::kNoThreshold);
+}
+
+// Each interval's entry: at its first and last float, and at every threshold and the floats
+// either side, the stored value is the number of thresholds the value reaches.
+TEST(Srgb, EveryIntervalsEntryCountsTheThresholds) {
+    const srgb::Tables& t = srgb::tables();
+    auto reached = [&](float l) { return int(std::upper_bound(t.threshold.begin() + 1, t.threshold.begin() + 256, l) - (t.threshold.begin() + 1)); };
+    std::vector<float> values;
+    for (int b = 0; b < srgb::Tables::kBuckets; ++b) {
+        const uint32_t first = uint32_t(srgb::Tables::kFirstBucket + b) << 16;
+        values.push_back(std::bit_cast<float>(first)), values.push_back(std::bit_cast<float>(first + 0xffffu));
+    }
+    for (int k = 1; k < 256; ++k)
+        for (float l = std::nextafter(std::nextafter(t.threshold[size_t(k)], 0.0f), 0.0f), n = 0; n < 5; l = std::nextafter(l, 2.0f), ++n) values.push_back(l);
+    for (float l : values) {
+        if (l >= 1.0f) continue;
+        ASSERT_EQ(int(srgb::encode(l)), reached(l)) << l;
+    }
 }
 
 // Eight lanes at once (the generic vector code, and AVX2's with gathers where the CPU has
