@@ -74,38 +74,54 @@ TEST(FragmentQueue, SamePictureAsShadingEachTriangle) {
         }
 }
 
-// Coverage in 32-bit lanes equals the 64-bit per-pixel coverage of rasterization.h.
+// The per-pixel sample masks a group rasterizer (rasterization_small.h) reports, as
+// rasterize_triangle reports them.
+template <int Samples, class Rasterize>
+std::vector<unsigned> group_coverage(const TriangleSetup<1>& t, const Rect& tile, Rasterize&& rasterize) {
+    std::vector<unsigned> got(64 * 64, 0);
+    using G = GroupSamples<Samples>;
+    rasterize(t, [&](int y, int x, const std::array<simd::i8, G::kVectors>& covered) {
+        for (int v = 0; v < G::kVectors; ++v)
+            for (int l = 0; l < simd::kLanes; ++l)
+                if (covered[size_t(v)][l]) {
+                    const int px = x + G::pixel(v)[l], s = Samples == 1 ? 0 : l % 4;
+                    got[size_t((y - tile.y0) * 64 + px - tile.x0)] |= 1u << s;
+                }
+    });
+    return got;
+}
+
+// Coverage in 32-bit lanes (small triangles), and from each row's spans (any triangle),
+// equals the 64-bit per-pixel coverage of rasterization.h.
 template <int Samples>
-void expect_small_coverage_matches() {
+void expect_group_coverage_matches() {
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> u(0, 1);
     const Rect tile{64, 128, 128, 192};
-    int tested = 0;
-    for (int k = 0; k < 3000; ++k) {
-        const float cx = 50 + 90 * u(rng), cy = 115 + 90 * u(rng), size = 1 + 63 * u(rng) * u(rng);
+    int small = 0, big = 0;
+    for (int k = 0; k < 4000; ++k) {
+        const bool huge = k % 4 == 3;  // (edges far past the tile, and past kSmallEdge)
+        const float cx = 50 + 90 * u(rng), cy = 115 + 90 * u(rng), size = huge ? 64 + 2000 * u(rng) : 1 + 63 * u(rng) * u(rng);
         std::array<ShadedVertex<1>, 3> p;
         ASSERT_TRUE(random_triangle(rng, cx, cy, size, size, p));
         if (signed_area2(p[0].X, p[0].Y, p[1].X, p[1].Y, p[2].X, p[2].Y) == 0) continue;
         TriangleSetup<1> t;
-        if (!setup_triangle<Samples>(p[0], p[1], p[2], FrontFace::CCW, tile, t) || !has_small_edges(t)) continue;
-        std::vector<unsigned> expected(64 * 64, 0), got(64 * 64, 0);
+        if (!setup_triangle<Samples>(p[0], p[1], p[2], FrontFace::CCW, tile, t)) continue;
+        std::vector<unsigned> expected(64 * 64, 0);
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
             expected[size_t((px.y - tile.y0) * 64 + px.x - tile.x0)] = px.mask;
         });
-        using G = GroupSamples<Samples>;
-        rasterize_small<Samples>(t, [&](int y, int x, const std::array<simd::i8, G::kVectors>& covered) {
-            for (int v = 0; v < G::kVectors; ++v)
-                for (int l = 0; l < simd::kLanes; ++l)
-                    if (covered[size_t(v)][l]) {
-                        const int px = x + G::pixel(v)[l], s = Samples == 1 ? 0 : l % 4;
-                        got[size_t((y - tile.y0) * 64 + px - tile.x0)] |= 1u << s;
-                    }
-        });
-        ASSERT_EQ(expected, got) << "triangle " << k;
-        ++tested;
+        auto spans = [](const TriangleEdges& e, auto&& on_group) { rasterize_span_groups<Samples>(e, on_group); };
+        ASSERT_EQ(expected, group_coverage<Samples>(t, tile, spans)) << "spans, triangle " << k;
+        ++big;
+        if (!has_small_edges(t)) continue;
+        auto lanes = [](const TriangleEdges& e, auto&& on_group) { rasterize_small<Samples>(e, on_group); };
+        ASSERT_EQ(expected, group_coverage<Samples>(t, tile, lanes)) << "32-bit lanes, triangle " << k;
+        ++small;
     }
-    EXPECT_GT(tested, 500);
+    EXPECT_GT(small, 500);
+    EXPECT_GT(big - small, 300);
 }
 
-TEST(SmallTriangleRasterization, SameCoverageAs64BitEdgesSingleSample) { expect_small_coverage_matches<1>(); }
-TEST(SmallTriangleRasterization, SameCoverageAs64BitEdgesMsaa) { expect_small_coverage_matches<4>(); }
+TEST(GroupRasterization, SameCoverageAs64BitEdgesSingleSample) { expect_group_coverage_matches<1>(); }
+TEST(GroupRasterization, SameCoverageAs64BitEdgesMsaa) { expect_group_coverage_matches<4>(); }

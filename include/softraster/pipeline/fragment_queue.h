@@ -84,15 +84,6 @@ public:
         if (count_ >= kCapacity) drain();
     }
 
-    // Queues one fragment of the triangle begun last.
-    void push(float z, const std::array<float, N>& var, int32_t pixel, unsigned samples) {
-        z_[size_t(count_)] = z;
-        for (size_t k = 0; k < size_t(N); ++k) var_[k][size_t(count_)] = var[k];
-        pixel_[size_t(count_)] = pixel;
-        samples_[size_t(count_)] = int32_t(samples);
-        if (++count_ >= kCapacity) drain();
-    }
-
     // Shades and writes everything queued.
     void flush() {
         shade(count_);

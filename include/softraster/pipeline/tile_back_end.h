@@ -324,8 +324,9 @@ struct TileBackEnd {
     }
 
     // FragmentQueue: rasterizes the triangle, depth-tests (and writes depth) and queues the
-    // fragments that pass; returns the number queued. Small triangles' coverage comes eight
-    // pixels at a time in 32-bit lanes (rasterization_small.h).
+    // fragments that pass; returns the number queued. Coverage comes eight pixels at a time
+    // (rasterization_small.h): a small triangle's in 32-bit lanes, a bigger one's with MSAA
+    // from each row's spans.
     uint64_t queue_triangle(TriangleSetup<N>& t, FragmentQueue<N, Samples>& queue) const requires(kQueueable) {
         using namespace simd;
         const int width = fb.width();
@@ -361,11 +362,11 @@ struct TileBackEnd {
                     for_each_group(x_begin, x_end, [&](int x, i8 lanes) { test(y, x, lanes); });
                 });
             }
-        } else if (has_small_edges(t)) {
+        } else {
             // Four vectors per group in the framebuffer's sample order (GroupSamples<4>): depth
             // at each sample, tested and written, then a mask of passing samples per pixel.
             using G = GroupSamples<Samples>;
-            rasterize_small<Samples>(t, [&](int y, int x, const std::array<i8, G::kVectors>& covered) {
+            auto test = [&](int y, int x, const std::array<i8, G::kVectors>& covered) {
                 need_planes();
                 float* depth_row = fb.depth_data() + fb.sample_index(0, y);
                 uint32_t passed = 0;  // Samples bits per pixel
@@ -379,17 +380,10 @@ struct TileBackEnd {
                 if (!passed) return;
                 const i8 samples = (splat_i(int32_t(passed)) >> (kLaneIndex * Samples)) & ((1 << Samples) - 1);
                 queue_group(y, x, samples != 0, samples);
-            });
-        } else {
-            need_planes();  // (this rasterizer interpolates depth itself)
-            rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
-                const size_t base = fb.sample_index(px.x, px.y);
-                const unsigned pass = tests.depth.template test_and_write_pixel<Samples>(fb.depth_data() + base, px.mask, px.z.data());
-                if (!pass) return;
-                const float i = float(px.x - t.origin_x), j = float(px.y - t.origin_y);  // the pixel center
-                ++queued;
-                queue.push(interpolate_depth(t, i, j), interpolate_varyings<L>(t, i, j), int32_t(base), pass);
-            });
+            };
+            // (Small edges: coverage in 32-bit lanes; else from each row's exact spans.)
+            if (has_small_edges(t)) rasterize_small<Samples>(t, test);
+            else rasterize_span_groups<Samples>(t, test);
         }
         return queued;
     }
