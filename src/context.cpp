@@ -89,12 +89,14 @@ void Context::execute() {
     };
     std::vector<Count> shaded(threads);
     owners_.resize(size_t(threads) * tile_samples);
+    fb_->allow_deferred_clears();
     for_each_item(pool_, size_t(target.grid.count()), [&](size_t tile, unsigned thread) {
         const Rect rect = target.grid.tile_rect(int(tile));
         uint32_t* owners = owners_.data() + size_t(thread) * tile_samples;
         const std::span<Command* const> draws(tile_commands_.data() + tile_first_[tile], tile_first_[tile + 1] - tile_first_[tile]);
         uint64_t& count = shaded[thread].n;
         for (size_t c = 0; c < draws.size();) {
+            if (!draws[c]->is_clear()) fb_->settle_tile(int(tile));  // (a clear is written before anything draws over it)
             const auto [end, worth_it] = hidden_surface_run(draws, c, int(tile), rect, fb_->samples());
             if (!worth_it) {
                 for (; c < end; ++c) count += draws[c]->draw_tile(int(tile), rect, target);

@@ -66,7 +66,7 @@ inline void merge_groups(const BlendSettings& settings, Framebuffer& fb, const G
     // would then be loaded again for every group.
     const BlendSettings blend = settings;
     const int width = fb.width(), count = p.count;
-    Rgba8* const color = fb.color_data();
+    Rgba8* const color = fb.color_plane();
     const size_t row_stride = fb.sample_index(0, 1);
     auto color_row = [&](int y) { return color + size_t(y) * row_stride; };
     if constexpr (!Blended) {

@@ -37,12 +37,12 @@ bool all_equal(const uint32_t* s, unsigned n) {
 // Pixels [begin, end) of the picture.
 void resolve_pixels(const Framebuffer& fb, Image& img, size_t begin, size_t end) {
     const auto n = unsigned(fb.samples());
-    const auto* words = reinterpret_cast<const uint32_t*>(fb.color_data());
+    const auto* words = reinterpret_cast<const uint32_t*>(fb.color_plane());
     auto* out = reinterpret_cast<uint32_t*>(img.pixels.data());
     static_assert(sizeof(Rgba8) == 4);
     if (fb.srgb()) {
         const srgb::Tables& t = srgb::tables();
-        const Rgba8* c = fb.color_data();
+        const Rgba8* c = fb.color_plane();
         for (size_t p = begin; p < end; ++p) {
             const uint32_t* s = words + n * p;
             if (all_equal(s, n)) out[p] = s[0];
@@ -51,7 +51,7 @@ void resolve_pixels(const Framebuffer& fb, Image& img, size_t begin, size_t end)
         return;
     }
     if (n != 4) {  // 2, 8, 16: the same rounding, channel by channel
-        const Rgba8* c = fb.color_data();
+        const Rgba8* c = fb.color_plane();
         for (size_t p = begin; p < end; ++p) {
             const Rgba8* s = c + n * p;
             unsigned sum[4] = {n / 2, n / 2, n / 2, n / 2};
@@ -78,18 +78,27 @@ void resolve_pixels(const Framebuffer& fb, Image& img, size_t begin, size_t end)
 
 void resolve(const Framebuffer& fb, Image& img, WorkerPool* pool) {
     if (img.width != fb.width() || img.height != fb.height()) img = Image(fb.width(), fb.height());
-    const size_t pixels = img.pixels.size();
-    if (fb.samples() == 1) {  // nothing to average
-        std::copy(fb.color_data(), fb.color_data() + pixels, img.pixels.begin());
-        return;
-    }
     // In bands of rows, one band per item (each pixel's result is its own: the same picture
-    // for any number of threads).
-    constexpr size_t kBandRows = 16;
-    const size_t band = kBandRows * size_t(fb.width()), bands = (pixels + band - 1) / band;
-    auto run = [&](size_t b, unsigned) { resolve_pixels(fb, img, b * band, std::min(pixels, (b + 1) * band)); };
-    if (pool) pool->parallel_for(bands, run);
-    else for (size_t b = 0; b < bands; ++b) run(b, 0);
+    // for any number of threads). A tile whose clear is deferred (framebuffer.h) has all its
+    // samples one color, the clear's, and that is each of its pixels.
+    constexpr int kBandRows = 16;
+    const TileGrid& tiles = fb.tiles();
+    const int width = fb.width(), bands = (fb.height() + kBandRows - 1) / kBandRows;
+    auto run = [&](size_t b, unsigned) {
+        for (int y = int(b) * kBandRows; y < std::min(fb.height(), int(b + 1) * kBandRows); ++y)
+            for (int tx = 0; tx < tiles.tiles_x; ++tx) {
+                const size_t begin = size_t(y) * size_t(width) + size_t(tx * kTileSize);
+                const size_t end = size_t(y) * size_t(width) + size_t(std::min(width, (tx + 1) * kTileSize));
+                if (const Framebuffer::TileClear* c = fb.deferred(tiles.tile_index(tx, y / kTileSize)))
+                    std::fill(img.pixels.begin() + ptrdiff_t(begin), img.pixels.begin() + ptrdiff_t(end), c->color);
+                else if (fb.samples() == 1)  // nothing to average
+                    std::copy(fb.color_plane() + begin, fb.color_plane() + end, img.pixels.begin() + ptrdiff_t(begin));
+                else
+                    resolve_pixels(fb, img, begin, end);
+            }
+    };
+    if (pool) pool->parallel_for(size_t(bands), run);
+    else for (size_t b = 0; b < size_t(bands); ++b) run(b, 0);
 }
 
 Image downsample_box(const Image& in, int k, ColorSpace color) {

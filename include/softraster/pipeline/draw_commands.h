@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <cstring>
 #include <span>
 #include <vector>
 
@@ -52,6 +51,9 @@ public:
     virtual void finish_binning(const TileGrid&) {}
     // Draws this command's part of one tile; returns the fragments shaded.
     virtual uint64_t draw_tile(int tile, const Rect& rect, const DrawTarget&) = 0;
+    // A clear, which may leave its tile's samples unwritten (Framebuffer's deferred clears);
+    // everything else draws on a settled tile.
+    virtual bool is_clear() const { return false; }
 
     // Commands binned by tile draw only in the tiles their triangles touch; the others (a
     // clear) draw in every tile.
@@ -133,32 +135,14 @@ public:
     ClearCommand(const glm::vec4& color, float depth, uint8_t stencil = 0) : color_(color), depth_(depth), stencil_(stencil) {}
     // Depth only: a depth pass's clear (shadow maps) leaves the color it never reads alone.
     explicit ClearCommand(float depth) : depth_(depth), depth_only_(true) {}
-    uint64_t draw_tile(int, const Rect& r, const DrawTarget& target) override {
+    // Deferred where the context allows it (Framebuffer's deferred clears).
+    uint64_t draw_tile(int tile, const Rect&, const DrawTarget& target) override {
         Framebuffer& fb = *target.fb;
-        const Rgba8 stored = quantize_rgba8(color_, fb.color_space());  // (as glClear with GL_FRAMEBUFFER_SRGB)
-        const size_t n = size_t(r.x1 - r.x0) * size_t(fb.samples());
-        static_assert(sizeof(Rgba8) == sizeof(uint32_t));
-        uint32_t color;  // filled as 32-bit words, which vectorizes (four bytes do not)
-        std::memcpy(&color, &stored, sizeof color);
-        // The tile's rows are far apart in memory, out of reach of the hardware prefetcher:
-        // ask for the rows a few ahead, or each row's writes wait for memory one after another.
-        constexpr int kAhead = 4;
-        for (int y = r.y0; y < r.y1; ++y) {
-            if (y + kAhead < r.y1) {
-                const auto* c = reinterpret_cast<const char*>(fb.color_data() + fb.sample_index(r.x0, y + kAhead));
-                const auto* d = reinterpret_cast<const char*>(fb.depth_data() + fb.sample_index(r.x0, y + kAhead));
-                for (size_t k = 0; k < n * sizeof(float); k += 64) {
-                    if (!depth_only_) __builtin_prefetch(c + k, /*write=*/1);
-                    __builtin_prefetch(d + k, /*write=*/1);
-                }
-            }
-            std::fill_n(fb.depth_data() + fb.sample_index(r.x0, y), n, depth_);
-            if (depth_only_) continue;
-            std::fill_n(reinterpret_cast<uint32_t*>(fb.color_data() + fb.sample_index(r.x0, y)), n, color);
-            if (fb.has_stencil()) std::fill_n(fb.stencil_data() + fb.sample_index(r.x0, y), n, stencil_);
-        }
+        if (depth_only_) fb.clear_tile_depth(tile, depth_);
+        else fb.clear_tile(tile, quantize_rgba8(color_, fb.color_space()), depth_, stencil_);  // (as glClear with GL_FRAMEBUFFER_SRGB)
         return 0;
     }
+    bool is_clear() const override { return true; }
 
 private:
     glm::vec4 color_{0.0f};

@@ -52,7 +52,7 @@ public:
     void start(ShadeGroups shade_groups, const void* shader, Framebuffer& fb) {
         shade_ = shade_groups;
         shader_ = shader;
-        color_ = fb.color_data();
+        color_ = fb.color_plane();
         color_space_ = fb.color_space();
         count_ = 0;
     }

@@ -81,16 +81,16 @@ inline void shade_fragment(const FragmentCalls<N>& calls, const void* shader, co
                            Framebuffer& fb, int x, int y, unsigned covered, const float* z, float center_z, bool front_facing,
                            MakeVaryings&& make_varyings, uint64_t& shaded) {
     const size_t base = fb.sample_index(x, y);
-    const unsigned pass = depth.template test_pixel<Samples>(fb.depth_data() + base, covered, z);
+    const unsigned pass = depth.template test_pixel<Samples>(fb.depth_plane() + base, covered, z);
     if (!pass) return;
     ++shaded;
     const FragCoord frag{float(x) + 0.5f, float(y) + 0.5f, center_z, front_facing};
     glm::vec4 color;
     if (!calls.pixel(shader, make_varyings(), frag, color)) return;
-    depth.template write_pixel<Samples>(fb.depth_data() + base, pass, z);
+    depth.template write_pixel<Samples>(fb.depth_plane() + base, pass, z);
     if (!blend.color_mask) return;
-    if (blend.blends()) merge_fragment<Samples, true>(blend, fb.color_data() + base, pass, color);
-    else merge_fragment<Samples, false>(blend, fb.color_data() + base, pass, color);
+    if (blend.blends()) merge_fragment<Samples, true>(blend, fb.color_plane() + base, pass, color);
+    else merge_fragment<Samples, false>(blend, fb.color_plane() + base, pass, color);
 }
 
 }  // namespace softraster

@@ -101,8 +101,8 @@ template <int N, class MakeVaryings>
 void general_fragment(const FragmentCalls<N>& calls, const void* shader, const FragmentOps& ops, Framebuffer& fb, int x, int y, unsigned covered, const float* z,
                       float center_z, bool front_facing, MakeVaryings&& make_varyings, uint64_t& shaded) {
     const size_t base = fb.sample_index(x, y);
-    float* depth = fb.depth_data() + base;
-    uint8_t* stencil = fb.has_stencil() ? fb.stencil_data() + base : nullptr;
+    float* depth = fb.depth_plane() + base;
+    uint8_t* stencil = fb.has_stencil() ? fb.stencil_plane() + base : nullptr;
     unsigned pass = covered;
     if (ops.early) {
         pass = ops.tests.test_and_write(depth, stencil, ops.samples, covered, z, front_facing);
@@ -118,7 +118,7 @@ void general_fragment(const FragmentCalls<N>& calls, const void* shader, const F
         if (!pass) return;
     }
     if (!ops.blend.color_mask) return;
-    Rgba8* c = fb.color_data() + base;
+    Rgba8* c = fb.color_plane() + base;
     if (ops.blend.replace) {  // quantized once for all samples, no blend arithmetic
         const Rgba8 q = quantize_rgba8(color, ops.blend.color_space);
         for (int s = 0; s < ops.samples; ++s)

@@ -91,7 +91,7 @@ void visible_samples(const TriangleEdges& t, const DepthTest& test, Framebuffer&
         auto group_depth = [&](int x, f8 j) { return z_plane.at(to_float(kLaneIndex) + float(x - origin_x), j); };
         if (!owners) {  // depth alone (a shadow map's): no owner row to find
             rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
-                float* const depth_row = fb.depth_data() + fb.sample_index(0, y);
+                float* const depth_row = fb.depth_plane() + fb.sample_index(0, y);
                 const f8 j = splat(float(y - origin_y));
                 for_each_group(x_begin, x_end, [&](int x, i8 covered) { depth.test_group(depth_row, x, width, group_depth(x, j), covered); });
             });
@@ -99,7 +99,7 @@ void visible_samples(const TriangleEdges& t, const DepthTest& test, Framebuffer&
         }
         rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
             int32_t* owner = reinterpret_cast<int32_t*>(owners) + size_t(y - rect.y0) * kTileSize;  // by x - rect.x0
-            float* const depth_row = fb.depth_data() + fb.sample_index(0, y);
+            float* const depth_row = fb.depth_plane() + fb.sample_index(0, y);
             const f8 j = splat(float(y - origin_y));
             for_each_group(x_begin, x_end, [&](int x, i8 covered) {
                 const i8 pass = depth.test_group(depth_row, x, width, group_depth(x, j), covered);
@@ -109,7 +109,7 @@ void visible_samples(const TriangleEdges& t, const DepthTest& test, Framebuffer&
         });
     } else {
         rasterize_triangle<Samples>(t, t.bounds, [&](const CoveredPixel<Samples>& px) {
-            const unsigned pass = depth.template test_and_write_pixel<Samples>(fb.depth_data() + fb.sample_index(px.x, px.y), px.mask, px.z.data());
+            const unsigned pass = depth.template test_and_write_pixel<Samples>(fb.depth_plane() + fb.sample_index(px.x, px.y), px.mask, px.z.data());
             if (!owners) return;
             uint32_t* owner = owners + (size_t(px.y - rect.y0) * kTileSize + size_t(px.x - rect.x0)) * Samples;
             for (int s = 0; s < Samples; ++s)
@@ -182,7 +182,7 @@ uint64_t shading_pass(const LayoutShader<L>& shader, const BinnedTriangles<L::N>
                 calls.pixel(shader.self, interpolate_varyings<L>(setup, i, j),
                             FragCoord{float(px.x) + 0.5f, float(px.y) + 0.5f, interpolate_depth(setup, i, j), setup.front_facing}, color);
                 ++shaded;
-                merge_fragment<Samples, /*Blended=*/false>(blend, fb.color_data() + fb.sample_index(px.x, px.y), mine, color);
+                merge_fragment<Samples, /*Blended=*/false>(blend, fb.color_plane() + fb.sample_index(px.x, px.y), mine, color);
             });
         }
     });

@@ -136,7 +136,7 @@ struct TileBackEnd {
         uint8_t* stencil;
     };
     DepthRow depth_row(int y) const {
-        return {fb.depth_data() + fb.sample_index(0, y), stencil() ? fb.stencil_data() + fb.sample_index(0, y) : nullptr};
+        return {fb.depth_plane() + fb.sample_index(0, y), stencil() ? fb.stencil_plane() + fb.sample_index(0, y) : nullptr};
     }
     // The early depth (and stencil) test of group [x, x + 8) of a row of `width` at depths z.
     simd::i8 test_group(const DepthRow& row, int x, int width, simd::f8 z, simd::i8 covered, bool front_facing) const {
@@ -258,7 +258,7 @@ struct TileBackEnd {
         // One color for the whole triangle (r.constant): nothing to shade, so each group is
         // merged at once, a Custom blend's for the row together. (Copies in locals: the
         // framebuffer's stores could alias anything a pointer or reference reaches.)
-        Rgba8* const color_row = fb.color_data() + fb.sample_index(0, span.y);
+        Rgba8* const color_row = fb.color_plane() + fb.sample_index(0, span.y);
         const DepthRow row = depth_row(span.y);
         const bool constant = r.constant != nullptr, custom_blend = blend.mode == BlendMode::Custom;
         const std::array<f8, 4> constant_rgba = constant ? *r.constant : std::array<f8, 4>{};
@@ -368,7 +368,7 @@ struct TileBackEnd {
             using G = GroupSamples<Samples>;
             auto test = [&](int y, int x, const std::array<i8, G::kVectors>& covered) {
                 need_planes();
-                float* depth_row = fb.depth_data() + fb.sample_index(0, y);
+                float* depth_row = fb.depth_plane() + fb.sample_index(0, y);
                 uint32_t passed = 0;  // Samples bits per pixel
                 for (int v = 0; v < G::kVectors; ++v) {
                     // at each sample: the pixel's offset from the origin plus the sample's (exact)
