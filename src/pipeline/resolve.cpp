@@ -3,6 +3,7 @@
 // buffer r, g, b average in linear light: the mean of the decoded samples, encoded.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "softraster/pipeline/resolve.h"
 #include "softraster/worker_pool.h"
@@ -25,12 +26,21 @@ Rgba8 srgb_mean(const srgb::Tables& t, unsigned n, At&& at) {
     return {srgb::encode(t, sum[0] * inv), srgb::encode(t, sum[1] * inv), srgb::encode(t, sum[2] * inv), uint8_t(alpha / n)};
 }
 
-// Whether the n samples of a pixel are one color, as inside a triangle: their mean is that
-// color in either color space (the sRGB mean of n equal values encodes back to the value,
-// which Resolve.EqualSamplesKeepTheirColor checks for every value and count).
-bool all_equal(const uint32_t* s, unsigned n) {
-    uint32_t differ = 0;
-    for (unsigned i = 1; i < n; ++i) differ |= s[i] ^ s[0];
+// Whether the N samples of a pixel are one color, as inside a triangle: their mean is that
+// color in either color space (the sRGB mean of N equal values encodes back to the value,
+// which Resolve.EqualSamplesKeepTheirColor checks for every value and count). Two samples
+// to a 64-bit word: the first word's halves equal, and every word equal to the first.
+template <unsigned N>
+bool all_equal(const uint32_t* s) {
+    static_assert(N % 2 == 0);
+    uint64_t first;
+    std::memcpy(&first, s, sizeof first);
+    uint64_t differ = (first ^ (first >> 32)) & 0xffffffffu;
+    for (unsigned i = 2; i < N; i += 2) {
+        uint64_t word;
+        std::memcpy(&word, s + i, sizeof word);
+        differ |= word ^ first;
+    }
     return differ == 0;
 }
 
@@ -43,12 +53,19 @@ void resolve_pixels(const Framebuffer& fb, Image& img, size_t begin, size_t end)
     if (fb.srgb()) {
         const srgb::Tables& t = srgb::tables();
         const Rgba8* c = fb.color_plane();
-        for (size_t p = begin; p < end; ++p) {
-            const uint32_t* s = words + n * p;
-            if (all_equal(s, n)) out[p] = s[0];
-            else img.pixels[p] = srgb_mean(t, n, [&](unsigned i) { return c[n * p + i]; });
+        auto pixels = [&]<unsigned N>() {
+            for (size_t p = begin; p < end; ++p) {
+                const uint32_t* s = words + N * p;
+                if (all_equal<N>(s)) out[p] = s[0];
+                else img.pixels[p] = srgb_mean(t, N, [&](unsigned i) { return c[N * p + i]; });
+            }
+        };
+        switch (n) {
+            case 2: return pixels.template operator()<2>();
+            case 4: return pixels.template operator()<4>();
+            case 8: return pixels.template operator()<8>();
+            default: return pixels.template operator()<16>();
         }
-        return;
     }
     if (n != 4) {  // 2, 8, 16: the same rounding, channel by channel
         const Rgba8* c = fb.color_plane();
