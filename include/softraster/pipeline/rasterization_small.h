@@ -1,6 +1,7 @@
-// Stage 8, rasterization, for small triangles: coverage of eight pixels at a time in 32-bit
+// Stage 8, rasterization, eight pixels at a time: for small triangles, coverage in 32-bit
 // integer lanes (Giesen, "Optimizing the basic rasterizer", 2013; llvmpipe does the same
-// with 32-bit steps inside a 64x64 tile).
+// with 32-bit steps inside a 64x64 tile); for any triangle, from each row's exact spans
+// (rasterize_span_groups, at the end).
 //
 // The edge functions of rasterization.h need 64 bits for a triangle anywhere in the guard
 // band. A triangle whose edges each span at most kSmallEdge (64 pixels) in x and in y needs
