@@ -47,6 +47,35 @@ inline Span edge_span(int64_t e, int64_t step, int n) {
     return {0, int(std::min<int64_t>(k, n))};
 }
 
+// The edge functions (plus bias) at each sample position of the pixels of a row, from the
+// row's first pixel: each sample's span of the row's pixels inside all three edges, and the
+// step to the next row. Exact integers.
+template <int Samples>
+struct SampleRows {
+    std::array<std::array<int64_t, 3>, Samples> e;  // E + bias at sample s of the row's first pixel
+    std::array<int64_t, 3> step_x, step_y;          // one pixel right, one row down
+    SampleRows(const TriangleEdges& t, int x, int y) {
+        using P = SamplePattern<Samples>;
+        for (size_t s = 0; s < size_t(Samples); ++s)
+            for (size_t i = 0; i < 3; ++i)
+                e[s][i] = t.edge(int(i), int64_t(x) * kSubpixelOne + P::x[s], int64_t(y) * kSubpixelOne + P::y[s]) + t.bias[i];
+        for (size_t i = 0; i < 3; ++i) step_x[i] = t.A[i] * kSubpixelOne, step_y[i] = t.B[i] * kSubpixelOne;
+    }
+    // Sample s's covered pixels among the row's first n: [begin, end), empty if begin >= end.
+    Span span(size_t s, int n) const {
+        Span sp{0, n};
+        for (size_t i = 0; i < 3; ++i) {
+            const Span es = edge_span(e[s][i], step_x[i], n);
+            sp = {std::max(sp.begin, es.begin), std::min(sp.end, es.end)};
+        }
+        return sp;
+    }
+    void next_row() {
+        for (auto& se : e)
+            for (size_t i = 0; i < 3; ++i) se[i] += step_y[i];
+    }
+};
+
 // Calls on_pixel(const CoveredPixel<Samples>&) for every pixel of `rect` with coverage.
 // Row by row: the edge functions give, for each sample position, the exact span of pixels
 // inside all three edges (three integer divisions per row and sample), so the pixels in
@@ -57,35 +86,22 @@ void rasterize_triangle(const TriangleEdges& t, const Rect& rect, OnPixel&& on_p
     const int y0 = std::max(rect.y0, t.bounds.y0), y1 = std::min(rect.y1, t.bounds.y1);
     if (x0 >= x1 || y0 >= y1) return;
     const int n = x1 - x0;
-
     using P = SamplePattern<Samples>;
-    std::array<std::array<int64_t, 3>, Samples> row;  // E + bias at sample s of pixel (x0, y)
-    for (size_t s = 0; s < size_t(Samples); ++s)
-        for (size_t i = 0; i < 3; ++i)
-            row[s][i] = t.edge(int(i), int64_t(x0) * kSubpixelOne + P::x[s], int64_t(y0) * kSubpixelOne + P::y[s]) + t.bias[i];
-    const std::array<int64_t, 3> step_x = {t.A[0] * kSubpixelOne, t.A[1] * kSubpixelOne, t.A[2] * kSubpixelOne};
-    const std::array<int64_t, 3> step_y = {t.B[0] * kSubpixelOne, t.B[1] * kSubpixelOne, t.B[2] * kSubpixelOne};
-
+    SampleRows<Samples> rows(t, x0, y0);
     CoveredPixel<Samples> px;
     const float j0 = float(y0 - t.origin_y), i0 = float(x0 - t.origin_x);
     for (int y = y0; y < y1; ++y) {
         std::array<Span, Samples> spans{};
-        std::array<std::array<int64_t, 3>, Samples> e = row;  // for narrow rows: stepped per pixel
+        std::array<std::array<int64_t, 3>, Samples> e = rows.e;  // for narrow rows: stepped per pixel
         int lo = 0, hi = n;
         if (n > kNarrow) {  // wide: exact spans by division
             lo = n, hi = 0;
             for (size_t s = 0; s < size_t(Samples); ++s) {
-                Span sp{0, n};
-                for (size_t i = 0; i < 3; ++i) {
-                    const Span es = edge_span(row[s][i], step_x[i], n);
-                    sp = {std::max(sp.begin, es.begin), std::min(sp.end, es.end)};
-                }
-                spans[s] = sp;
-                if (sp.begin < sp.end) lo = std::min(lo, sp.begin), hi = std::max(hi, sp.end);
+                spans[s] = rows.span(s, n);
+                if (spans[s].begin < spans[s].end) lo = std::min(lo, spans[s].begin), hi = std::max(hi, spans[s].end);
             }
         }
-        for (size_t s = 0; s < size_t(Samples); ++s)
-            for (size_t i = 0; i < 3; ++i) row[s][i] += step_y[i];
+        rows.next_row();
         const float j = j0 + float(y - y0);
         for (int k = lo; k < hi; ++k) {
             unsigned mask = 0;
@@ -95,7 +111,7 @@ void rasterize_triangle(const TriangleEdges& t, const Rect& rect, OnPixel&& on_p
             } else {  // narrow: a sign test per sample, cheaper than three 64-bit divisions
                 for (size_t s = 0; s < size_t(Samples); ++s) {
                     if ((e[s][0] | e[s][1] | e[s][2]) >= 0) mask |= 1u << s;
-                    for (size_t i = 0; i < 3; ++i) e[s][i] += step_x[i];
+                    for (size_t i = 0; i < 3; ++i) e[s][i] += rows.step_x[i];
                 }
             }
             if (!mask) continue;
@@ -118,25 +134,18 @@ void rasterize_spans(const TriangleEdges& t, const Rect& rect, OnSpan&& on_span)
     const int y0 = std::max(rect.y0, t.bounds.y0), y1 = std::min(rect.y1, t.bounds.y1);
     if (x0 >= x1 || y0 >= y1) return;
     const int n = x1 - x0;
-    std::array<int64_t, 3> row;  // E + bias at the center of pixel (x0, y)
-    for (size_t i = 0; i < 3; ++i)
-        row[i] = t.edge(int(i), int64_t(x0) * kSubpixelOne + 128, int64_t(y0) * kSubpixelOne + 128) + t.bias[i];
-    const std::array<int64_t, 3> step_x = {t.A[0] * kSubpixelOne, t.A[1] * kSubpixelOne, t.A[2] * kSubpixelOne};
-    // (In locals: on_span may store to memory that a reference to t could alias.)
-    const std::array<int64_t, 3> step_y = {t.B[0] * kSubpixelOne, t.B[1] * kSubpixelOne, t.B[2] * kSubpixelOne};
+    // (A local: on_span may store to memory that a reference to t could alias.)
+    SampleRows<1> rows(t, x0, y0);  // at the pixels' centers
     for (int y = y0; y < y1; ++y) {
         int lo = 0, hi = n;
         if (n > kNarrow) {
-            for (size_t i = 0; i < 3; ++i) {
-                const Span e = edge_span(row[i], step_x[i], n);
-                lo = std::max(lo, e.begin);
-                hi = std::min(hi, e.end);
-            }
+            const Span sp = rows.span(0, n);
+            lo = sp.begin, hi = sp.end;
         } else {  // narrow: walk to the first covered pixel, then to the first uncovered one
-            std::array<int64_t, 3> e = row;
+            std::array<int64_t, 3> e = rows.e[0];
             auto inside = [&] { return (e[0] | e[1] | e[2]) >= 0; };
             auto step = [&] {
-                for (size_t i = 0; i < 3; ++i) e[i] += step_x[i];
+                for (size_t i = 0; i < 3; ++i) e[i] += rows.step_x[i];
             };
             lo = 0;
             while (lo < n && !inside()) ++lo, step();
@@ -144,7 +153,7 @@ void rasterize_spans(const TriangleEdges& t, const Rect& rect, OnSpan&& on_span)
             while (hi < n && inside()) ++hi, step();
         }
         if (lo < hi) on_span(y, x0 + lo, x0 + hi);
-        for (size_t i = 0; i < 3; ++i) row[i] += step_y[i];
+        rows.next_row();
     }
 }
 

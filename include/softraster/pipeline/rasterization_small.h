@@ -96,7 +96,7 @@ void rasterize_small(const TriangleEdges& t, OnGroup&& on_group) {
 }
 
 // The same calls for a triangle of any size: each row's coverage from the exact span of
-// pixels inside all three edges at each sample position (edge_span, 64-bit, as
+// pixels inside all three edges at each sample position (SampleRows, 64-bit, as
 // rasterize_triangle finds them), turned into lane masks by comparing each lane's pixel with
 // its sample's span. A big triangle's rows then cost three divisions per sample and a few
 // vector operations per group, not a loop over its pixels and samples.
@@ -104,31 +104,21 @@ template <int Samples, class OnGroup>
 void rasterize_span_groups(const TriangleEdges& t, OnGroup&& on_group) {
     using namespace simd;
     using G = GroupSamples<Samples>;
-    using P = SamplePattern<Samples>;
     constexpr int V = G::kVectors;
     const Rect& r = t.bounds;
     const int n = r.x1 - r.x0;
     if (n <= 0 || r.y0 >= r.y1) return;
-    std::array<std::array<int64_t, 3>, Samples> row;  // E + bias at sample s of pixel (r.x0, y)
-    for (size_t s = 0; s < size_t(Samples); ++s)
-        for (size_t i = 0; i < 3; ++i)
-            row[s][i] = t.edge(int(i), int64_t(r.x0) * kSubpixelOne + P::x[s], int64_t(r.y0) * kSubpixelOne + P::y[s]) + t.bias[i];
-    const std::array<int64_t, 3> step_x = {t.A[0] * kSubpixelOne, t.A[1] * kSubpixelOne, t.A[2] * kSubpixelOne};
-    const std::array<int64_t, 3> step_y = {t.B[0] * kSubpixelOne, t.B[1] * kSubpixelOne, t.B[2] * kSubpixelOne};
+    SampleRows<Samples> rows(t, r.x0, r.y0);
     const i8 lane_sample = kLaneIndex & (Samples - 1);  // (the lanes' samples, GroupSamples' order)
     for (int y = r.y0; y < r.y1; ++y) {
         std::array<int32_t, Samples> begin, end;  // sample s's span of pixels [begin, end)
         int lo = r.x1, hi = r.x0;
         for (size_t s = 0; s < size_t(Samples); ++s) {
-            Span sp{0, n};
-            for (size_t i = 0; i < 3; ++i) {
-                const Span es = edge_span(row[s][i], step_x[i], n);
-                sp = {std::max(sp.begin, es.begin), std::min(sp.end, es.end)};
-                row[s][i] += step_y[i];
-            }
+            const Span sp = rows.span(s, n);
             begin[s] = r.x0 + sp.begin, end[s] = r.x0 + sp.end;
             if (sp.begin < sp.end) lo = std::min(lo, begin[s]), hi = std::max(hi, end[s]);
         }
+        rows.next_row();
         if (lo >= hi) continue;
         i8 lane_begin, lane_end;
         for (int l = 0; l < kLanes; ++l) lane_begin[l] = begin[size_t(lane_sample[l])], lane_end[l] = end[size_t(lane_sample[l])];
