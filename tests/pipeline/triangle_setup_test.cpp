@@ -2,6 +2,8 @@
 // covers, with one sample per pixel and with 4x MSAA, and a triangle set up as touching
 // nothing (binning drops these) covers no sample of the tile. Coverage here is an independent
 // brute-force test of every sample against the three edges with the top-left rule.
+// The interpolation planes, made four at a time, are each the plane formula's for its
+// corner values, bit for bit, for every varying count.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -65,3 +67,59 @@ TEST(PixelBounds, HoldEveryCoveredSample) { expect_bounds_hold_every_covered_sam
 TEST(PixelBounds, HoldEveryCoveredSampleMsaa) { expect_bounds_hold_every_covered_sample<4>(); }
 
 }  // namespace
+
+namespace {
+
+// setup_planes computes the varyings' and 1/w's planes four lanes at a time; each must be
+// PlaneBasis::at_origin's plane of its corner values (varying times 1/w, or the varying
+// itself for noperspective), rounded to float, bit for bit, whatever the varying count.
+template <int N>
+void expect_planes_of_the_corner_values(bool noperspective) {
+    std::mt19937 rng(11 + N);
+    std::uniform_real_distribution<float> u(0, 1);
+    const Rect tile{64, 128, 128, 192};
+    int checked = 0;
+    for (int k = 0; k < 200; ++k) {
+        std::array<ShadedVertex<N>, 3> p;
+        for (ShadedVertex<N>& v : p) {
+            v.window = {60 + 72 * u(rng), 124 + 72 * u(rng), u(rng), 0.05f + 2 * u(rng)};
+            v.X = int32_t(snap_to_subpixel(v.window.x)), v.Y = int32_t(snap_to_subpixel(v.window.y));
+            for (float& a : v.clip.var) a = 10 * u(rng) - 5;
+        }
+        if (signed_area2(p[0].X, p[0].Y, p[1].X, p[1].Y, p[2].X, p[2].Y) == 0) continue;
+        TriangleSetup<N> t;
+        t.options.noperspective = noperspective;
+        if (!setup_coverage<1>(p[0], p[1], p[2], FrontFace::CCW, tile, t)) continue;
+        setup_planes(t);
+        const PlaneBasis basis = plane_basis(t);
+        auto expect_plane = [&](const Plane& got, double a0, double a1, double a2, const char* what, size_t i) {
+            const auto [value, dadx, dady] = basis.at_origin(a0, a1, a2);
+            EXPECT_EQ(got.a0, float(value)) << what << i << " of triangle " << k;
+            EXPECT_EQ(got.dadx, float(dadx)) << what << i << " of triangle " << k;
+            EXPECT_EQ(got.dady, float(dady)) << what << i << " of triangle " << k;
+        };
+        const ShadedVertex<N>&a = *t.corner[0], &b = *t.corner[1], &c = *t.corner[2];
+        const double wa = noperspective ? 1.0 : a.window.inv_w, wb = noperspective ? 1.0 : b.window.inv_w,
+                     wc = noperspective ? 1.0 : c.window.inv_w;
+        for (size_t i = 0; i < size_t(N); ++i)
+            expect_plane(t.var_w[i], a.clip.var[i] * wa, b.clip.var[i] * wb, c.clip.var[i] * wc, "varying ", i);
+        if (noperspective) {
+            EXPECT_EQ(t.inv_w.a0, 1.0f);
+            EXPECT_EQ(t.inv_w.dadx, 0.0f);
+            EXPECT_EQ(t.inv_w.dady, 0.0f);
+        } else {
+            expect_plane(t.inv_w, wa, wb, wc, "1/w", 0);
+        }
+        ++checked;
+    }
+    EXPECT_GT(checked, 150);
+}
+
+}  // namespace
+
+TEST(SetupPlanes, AreThePlanesOfTheCornerValuesForEveryVaryingCount) {
+    [&]<int... M>(std::integer_sequence<int, M...>) {
+        (expect_planes_of_the_corner_values<M + 1>(false), ...);
+        (expect_planes_of_the_corner_values<M + 1>(true), ...);
+    }(std::make_integer_sequence<int, 10>());
+}

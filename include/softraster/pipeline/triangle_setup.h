@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 #include "softraster/pipeline/culling.h"
@@ -153,10 +154,6 @@ struct PlaneBasis {
         const double dadx = (d1 * y2 - d2 * y1) * inv_det, dady = (d2 * x1 - d1 * x2) * inv_det;
         return {a0 + dadx * ox + dady * oy, dadx, dady};
     }
-    Plane plane(double a0, double a1, double a2) const {
-        const auto [value, dadx, dady] = at_origin(a0, a1, a2);
-        return Plane{float(value), float(dadx), float(dady)};
-    }
 };
 template <int N>
 PlaneBasis plane_basis(const TriangleSetup<N>& t) {
@@ -189,6 +186,46 @@ void setup_depth_plane(TriangleSetup<N>& t, const PlaneBasis& basis) {
     t.z = DepthPlane{z_hi, float(z0 - double(z_hi)), float(dzdx), float(dzdy)};
 }
 
+// setup_planes' arithmetic for the varyings and 1/w, four planes at a time: each plane a
+// lane of four-double vectors (PlaneBasis::at_origin's operations in its order, lane by lane:
+// the same bits). The lanes, in order: the N varyings (over w, or themselves for
+// noperspective), 1/w (the plane of 1 over w), then unused lanes. (Depth stays apart, in
+// setup_depth_plane: in a lane of its own vector it came later, and the rasterizer waits
+// on it first.)
+namespace plane_lanes {
+using d4 = double __attribute__((vector_size(32)));
+using f4 = float __attribute__((vector_size(16)));
+template <int N>
+inline constexpr int kVectors = (N + 1 + 3) / 4;
+
+// Lane I's value at corner v before the division by w, as a float: a varying or 1.
+template <int N, int I>
+float corner_value(const ShadedVertex<N>& v) {
+    if constexpr (I < N) return v.clip.var[size_t(I)];
+    else if constexpr (I == N) return 1.0f;
+    else return 0.0f;
+}
+// Vector Q's values at corner v. Varyings four in a row are one load; the last vector's are a
+// shuffle of the last four varyings, loaded together, with 1 and 0s: its lanes stored one
+// by one and loaded as a vector would wait for the stores to reach the cache.
+template <int N, int Q>
+d4 corner(const ShadedVertex<N>& v, double w) {
+    f4 f;
+    if constexpr (4 * Q + 4 <= N) {
+        std::memcpy(&f, &v.clip.var[size_t(4 * Q)], sizeof f);
+    } else if constexpr (N >= 4) {
+        f4 last;
+        std::memcpy(&last, &v.clip.var[size_t(N - 4)], sizeof last);
+        const f4 extra{1.0f, 0.0f, 0.0f, 0.0f};
+        constexpr auto from = [](int i) { return i < N ? i - (N - 4) : 4 + std::min(i - N, 1); };
+        f = __builtin_shufflevector(last, extra, from(4 * Q), from(4 * Q + 1), from(4 * Q + 2), from(4 * Q + 3));
+    } else {
+        f = f4{corner_value<N, 4 * Q>(v), corner_value<N, 4 * Q + 1>(v), corner_value<N, 4 * Q + 2>(v), corner_value<N, 4 * Q + 3>(v)};
+    }
+    return __builtin_convertvector(f, d4) * w;
+}
+}  // namespace plane_lanes
+
 // Makes the interpolation planes of a triangle whose coverage is set up: depth, 1/w and the
 // varyings. Flat: the shader's flat varyings (shader.h), whose planes are the provoking
 // vertex's value, constant.
@@ -203,7 +240,6 @@ void setup_planes(TriangleSetup<N>& t) {
     const PlaneBasis basis = plane_basis(t);
     setup_depth_plane(t, basis);
     const ShadedVertex<N>&v0 = *t.corner[0], &v1 = *t.corner[1], &v2 = *t.corner[2];
-    const WindowPosition &w0 = v0.window, &w1 = v1.window, &w2 = v2.window;
     // A triangle whose corners carry equal varyings (a flat-shaded face's normal, a plane's
     // normal, one color) has them everywhere: (a/w)/(1/w) = a exactly in real numbers, and
     // taking a itself avoids the rounding of that division (and the division). A smooth
@@ -217,14 +253,33 @@ void setup_planes(TriangleSetup<N>& t) {
             return;
         }
     }
-    if (t.options.noperspective) {
-        t.inv_w = Plane{1.0f, 0.0f, 0.0f};
-        for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = basis.plane(v0.clip.var[k], v1.clip.var[k], v2.clip.var[k]);
-    } else {
-        t.inv_w = basis.plane(w0.inv_w, w1.inv_w, w2.inv_w);
-        for (size_t k = 0; k < size_t(N); ++k)
-            t.var_w[k] = basis.plane(double(v0.clip.var[k]) * w0.inv_w, double(v1.clip.var[k]) * w1.inv_w, double(v2.clip.var[k]) * w2.inv_w);
-    }
+    using namespace plane_lanes;
+    const bool perspective = !t.options.noperspective;
+    const double w[3] = {perspective ? double(v0.window.inv_w) : 1.0, perspective ? double(v1.window.inv_w) : 1.0,
+                         perspective ? double(v2.window.inv_w) : 1.0};
+    [&]<int... Q>(std::integer_sequence<int, Q...>) {
+        ([&] {
+            const d4 a0 = corner<N, Q>(v0, w[0]), a1 = corner<N, Q>(v1, w[1]), a2 = corner<N, Q>(v2, w[2]);
+            const d4 d1 = a1 - a0, d2 = a2 - a0;
+            const d4 dadx = (d1 * basis.y2 - d2 * basis.y1) * basis.inv_det, dady = (d2 * basis.x1 - d1 * basis.x2) * basis.inv_det;
+            const d4 value = a0 + dadx * basis.ox + dady * basis.oy;
+            const f4 a = __builtin_convertvector(value, f4), x = __builtin_convertvector(dadx, f4), y = __builtin_convertvector(dady, f4);
+            if constexpr (4 * Q + 4 <= N) {  // four varyings' planes in a row, (a, x, y) each: a 4x3 transpose
+                const f4 lo = __builtin_shufflevector(a, x, 0, 4, 1, 5), hi = __builtin_shufflevector(a, x, 2, 6, 3, 7);
+                const f4 rows[3] = {__builtin_shufflevector(lo, y, 0, 1, 4, 2),
+                                    __builtin_shufflevector(__builtin_shufflevector(lo, y, 3, 5, 3, 5), hi, 0, 1, 4, 5),
+                                    __builtin_shufflevector(y, hi, 2, 6, 7, 3)};
+                static_assert(sizeof(Plane) == 3 * sizeof(float));
+                std::memcpy(&t.var_w[size_t(4 * Q)], rows, sizeof rows);
+            } else {
+                for (int l = 0; l < 4; ++l) {
+                    const int i = 4 * Q + l;
+                    if (i < N) t.var_w[size_t(i)] = Plane{a[l], x[l], y[l]};
+                    else if (i == N) t.inv_w = perspective ? Plane{a[l], x[l], y[l]} : Plane{1.0f, 0.0f, 0.0f};
+                }
+            }
+        }(), ...);
+    }(std::make_integer_sequence<int, kVectors<N>>());
     for (size_t k = 0; k < size_t(N); ++k)
         if ((Flat >> k) & 1) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
     t.has_planes = true;
