@@ -101,6 +101,23 @@ for args, what in (([P('x.jpg')], 'a .jpg output'), ([P('y.png'), '--stencil-out
     if r.returncode != 2 or len(r.stderr.strip().split('\n')) != 1 or os.path.exists(P('y.png')):
         failures.append('%s should be refused (exit 2, one line, no output): %d %r' % (what, r.returncode, r.stderr))
 
+# bench: the JSON report's counts. Two spheres of 6 x 12 quads (144 triangles each), a frame
+# count of our choosing, and times in order.
+spheres = P('bench_spheres.json')
+with open(spheres, 'w') as f:
+    json.dump({"version": 1, "image": {"width": 96, "height": 64},
+               "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "fov_y": 45},
+               "objects": [{"builtin": {"type": "uv_sphere", "rings": 6, "segments": 12}, "transform": {"translate": [x, 0, 0]},
+                            "material": {"shading": "unlit", "color": [1, 0.5, 0.2, 1]}} for x in (-0.8, 0.8)]}, f)
+r = run([exe, 'bench', spheres, '--frames', '3', '--warmup', '1', '--threads', '2', '--json'])
+try:
+    b = json.loads(r.stdout) if r.returncode == 0 else {}
+except ValueError:
+    b = {}
+if not (b.get('frames') == 3 and b.get('threads') == 2 and b.get('triangles') == 288 and b.get('fragments_shaded', 0) > 0
+        and 0 < b.get('min_ms', 0) <= b.get('median_ms', 0) <= b.get('max_ms', 0)):
+    failures.append('bench --json should report 3 frames of 288 triangles: %d %r %s' % (r.returncode, b, r.stderr))
+
 if failures:
     print('FAILED:\n  ' + '\n  '.join(failures))
     sys.exit(1)
