@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 #include <utility>
 
 #include "softraster/pipeline/culling.h"
@@ -148,10 +149,12 @@ bool constant_varyings(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, con
 struct PlaneBasis {
     double x1, y1, x2, y2, inv_det, ox, oy;
     // The plane of the values a0, a1, a2 at the corners: its value at the origin pixel and its
-    // gradients, in double.
-    std::array<double, 3> at_origin(double a0, double a1, double a2) const {
-        const double d1 = a1 - a0, d2 = a2 - a0;
-        const double dadx = (d1 * y2 - d2 * y1) * inv_det, dady = (d2 * x1 - d1 * x2) * inv_det;
+    // gradients, in double (T: a double, or a vector of them, one plane per lane).
+    template <class T>
+    std::array<T, 3> at_origin(T a0, T a1, T a2) const {
+        static_assert(!std::is_same_v<T, float>, "planes are made in double precision");
+        const T d1 = a1 - a0, d2 = a2 - a0;
+        const T dadx = (d1 * y2 - d2 * y1) * inv_det, dady = (d2 * x1 - d1 * x2) * inv_det;
         return {a0 + dadx * ox + dady * oy, dadx, dady};
     }
 };
@@ -170,7 +173,7 @@ PlaneBasis plane_basis(const TriangleSetup<N>& t) {
 template <int N>
 void setup_depth_plane(TriangleSetup<N>& t, const PlaneBasis& basis) {
     const WindowPosition &w0 = t.corner[0]->window, &w1 = t.corner[1]->window, &w2 = t.corner[2]->window;
-    auto [z0, dzdx, dzdy] = basis.at_origin(w0.z, w1.z, w2.z);
+    auto [z0, dzdx, dzdy] = basis.at_origin<double>(w0.z, w1.z, w2.z);
     if (t.options.offset_factor != 0.0f || t.options.offset_units != 0.0f) {
         // glPolygonOffset for a float depth buffer: the slope m = max(|dz/dx|, |dz/dy|) and the
         // minimum resolvable difference r = 2^(e - 23), e the exponent of the largest |z| of
@@ -187,8 +190,8 @@ void setup_depth_plane(TriangleSetup<N>& t, const PlaneBasis& basis) {
 }
 
 // setup_planes' arithmetic for the varyings and 1/w, four planes at a time: each plane a
-// lane of four-double vectors (PlaneBasis::at_origin's operations in its order, lane by lane:
-// the same bits). The lanes, in order: the N varyings (over w, or themselves for
+// lane of four-double vectors, through PlaneBasis::at_origin (lane by lane the operations of
+// one plane, in its order: the same bits). The lanes, in order: the N varyings (over w, or themselves for
 // noperspective), 1/w (the plane of 1 over w), then unused lanes. (Depth stays apart, in
 // setup_depth_plane: in a lane of its own vector it came later, and the rasterizer waits
 // on it first.)
@@ -260,9 +263,7 @@ void setup_planes(TriangleSetup<N>& t) {
     [&]<int... Q>(std::integer_sequence<int, Q...>) {
         ([&] {
             const d4 a0 = corner<N, Q>(v0, w[0]), a1 = corner<N, Q>(v1, w[1]), a2 = corner<N, Q>(v2, w[2]);
-            const d4 d1 = a1 - a0, d2 = a2 - a0;
-            const d4 dadx = (d1 * basis.y2 - d2 * basis.y1) * basis.inv_det, dady = (d2 * basis.x1 - d1 * basis.x2) * basis.inv_det;
-            const d4 value = a0 + dadx * basis.ox + dady * basis.oy;
+            const auto [value, dadx, dady] = basis.at_origin(a0, a1, a2);
             const f4 a = __builtin_convertvector(value, f4), x = __builtin_convertvector(dadx, f4), y = __builtin_convertvector(dady, f4);
             if constexpr (4 * Q + 4 <= N) {  // four varyings' planes in a row, (a, x, y) each: a 4x3 transpose
                 const f4 lo = __builtin_shufflevector(a, x, 0, 4, 1, 5), hi = __builtin_shufflevector(a, x, 2, 6, 3, 7);
