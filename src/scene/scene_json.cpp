@@ -2,6 +2,7 @@
 // (a version 1 file may not use a key version 2 added). Errors name the file and the JSON
 // path: "scene.json: objects[2].material.shininess: ...".
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 
@@ -43,6 +44,10 @@ struct Loader {
     int samples = 1;
     ColorSpace color_space = ColorSpace::Linear;  // the picture's, and the color textures'
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;  // one load per distinct file
+    // One mesh per distinct builtin (its type and numbers): objects naming the same one share
+    // it, as objects naming the same file do, so a scene of thousands of such objects holds
+    // and draws from one copy of its vertices and indices, not thousands.
+    std::map<std::string, std::shared_ptr<const Mesh>> builtins;
     std::map<std::string, std::shared_ptr<const Model>> models;
     std::map<std::pair<std::string, ColorSpace>, std::shared_ptr<const Texture>> textures;
 
@@ -94,6 +99,15 @@ struct Loader {
     }
 
     std::shared_ptr<const Mesh> read_builtin(const Node& n) {
+        std::shared_ptr<const Mesh> made;
+        const std::string key = make_builtin(n, made);
+        auto& slot = builtins[key];
+        if (!slot) slot = std::move(made);
+        return slot;
+    }
+    // Makes builtin n's mesh; returns its key: the type and each number that shapes it, exactly
+    // (hexadecimal floats).
+    std::string make_builtin(const Node& n, std::shared_ptr<const Mesh>& mesh) {
         if (!n.raw().is_object()) n.fail("expected an object");
         const std::string type = n["type"].string();
         auto positive = [&](const char* key, double def) {
@@ -102,22 +116,31 @@ struct Loader {
         auto count = [&](const char* key, int def, int min) {
             return n.has(key) ? n[key].integer_in(min, 1 << 14) : def;
         };
+        // The key; the mesh is made only for the first object that names it.
+        auto keyed = [&](auto make, auto... numbers) {
+            std::string key = type;
+            char at[64];
+            ((std::snprintf(at, sizeof at, " %a", double(numbers)), key += at), ...);
+            if (!builtins.count(key)) mesh = std::make_shared<Mesh>(make(numbers...));
+            return key;
+        };
         if (type == "plane") {
             n.expect_object({"type", "size", "divisions"});
-            return std::make_shared<Mesh>(make_plane(positive("size", 2), count("divisions", 1, 1)));
+            return keyed([](double size, int divisions) { return make_plane(size, divisions); }, positive("size", 2), count("divisions", 1, 1));
         }
         if (type == "uv_sphere") {
             n.expect_object({"type", "radius", "rings", "segments"});
-            return std::make_shared<Mesh>(make_uv_sphere(positive("radius", 1), count("rings", 32, 2), count("segments", 64, 3)));
+            return keyed([](double r, int rings, int segments) { return make_uv_sphere(r, rings, segments); }, positive("radius", 1),
+                         count("rings", 32, 2), count("segments", 64, 3));
         }
         if (type == "torus") {
             n.expect_object({"type", "major", "minor", "rings", "segments"});
-            return std::make_shared<Mesh>(make_torus(positive("major", 1), positive("minor", 0.25), count("rings", 48, 3),
-                                                     count("segments", 24, 3)));
+            return keyed([](double major, double minor, int rings, int segments) { return make_torus(major, minor, rings, segments); },
+                         positive("major", 1), positive("minor", 0.25), count("rings", 48, 3), count("segments", 24, 3));
         }
         if (type == "cube") {
             n.expect_object({"type", "size"});
-            return std::make_shared<Mesh>(make_cube(positive("size", 2)));
+            return keyed([](double size) { return make_cube(size); }, positive("size", 2));
         }
         n["type"].fail("unknown builtin '" + type + "' (expected one of: plane, uv_sphere, torus, cube)");
     }

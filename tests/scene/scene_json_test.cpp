@@ -310,3 +310,23 @@ TEST(SceneJson, Environment) {
         EXPECT_NE(err.find(expected), std::string::npos) << "got: " << err << "\nwanted: " << expected;
     }
 }
+
+TEST(SceneJson, ObjectsNamingTheSameBuiltinShareItsMesh) {
+    const Scene s = load_scene(write_scene("shared.json", R"({"version": 1, "image": {"width": 32, "height": 16},
+      "camera": {"eye": [0, 0, 3], "target": [0, 0, 0]}, "objects": [
+        {"builtin": {"type": "uv_sphere", "radius": 0.5, "rings": 8, "segments": 16}},
+        {"builtin": {"type": "uv_sphere", "segments": 16, "rings": 8, "radius": 0.5}, "transform": {"translate": [1, 0, 0]}},
+        {"builtin": {"type": "uv_sphere", "radius": 0.5, "rings": 8, "segments": 17}},
+        {"builtin": {"type": "uv_sphere", "radius": 0.5000001, "rings": 8, "segments": 16}},
+        {"builtin": {"type": "torus", "rings": 8, "segments": 16}},
+        {"builtin": {"type": "cube"}}, {"builtin": {"type": "cube", "size": 2}}, {"builtin": {"type": "cube", "size": 3}}]})"));
+    ASSERT_EQ(s.objects.size(), 8u);
+    EXPECT_EQ(s.objects[0].mesh.get(), s.objects[1].mesh.get());  // the same numbers, in any order
+    EXPECT_NE(s.objects[0].mesh.get(), s.objects[2].mesh.get());
+    EXPECT_NE(s.objects[0].mesh.get(), s.objects[3].mesh.get());  // (any difference counts)
+    EXPECT_EQ(s.objects[2].mesh->triangle_count(), 2u * 8 * 17);
+    EXPECT_EQ(s.objects[4].mesh->triangle_count(), 2u * 8 * 16);
+    EXPECT_EQ(s.objects[5].mesh.get(), s.objects[6].mesh.get());  // the default size given or not
+    EXPECT_NE(s.objects[5].mesh.get(), s.objects[7].mesh.get());
+    EXPECT_EQ(s.objects[7].mesh->vertices.front().position, s.objects[5].mesh->vertices.front().position * 1.5f);
+}
