@@ -99,15 +99,6 @@ struct Loader {
     }
 
     std::shared_ptr<const Mesh> read_builtin(const Node& n) {
-        std::shared_ptr<const Mesh> made;
-        const std::string key = make_builtin(n, made);
-        auto& slot = builtins[key];
-        if (!slot) slot = std::move(made);
-        return slot;
-    }
-    // Makes builtin n's mesh; returns its key: the type and each number that shapes it, exactly
-    // (hexadecimal floats).
-    std::string make_builtin(const Node& n, std::shared_ptr<const Mesh>& mesh) {
         if (!n.raw().is_object()) n.fail("expected an object");
         const std::string type = n["type"].string();
         auto positive = [&](const char* key, double def) {
@@ -116,31 +107,31 @@ struct Loader {
         auto count = [&](const char* key, int def, int min) {
             return n.has(key) ? n[key].integer_in(min, 1 << 14) : def;
         };
-        // The key; the mesh is made only for the first object that names it.
-        auto keyed = [&](auto make, auto... numbers) {
+        // The mesh of make(numbers...), made for the first object that names this type with
+        // these numbers (the key: each of them exactly, in hexadecimal).
+        auto shared = [&](auto make, auto... numbers) {
             std::string key = type;
             char at[64];
             ((std::snprintf(at, sizeof at, " %a", double(numbers)), key += at), ...);
-            if (!builtins.count(key)) mesh = std::make_shared<Mesh>(make(numbers...));
-            return key;
+            auto& slot = builtins[key];
+            if (!slot) slot = std::make_shared<Mesh>(make(numbers...));
+            return slot;
         };
         if (type == "plane") {
             n.expect_object({"type", "size", "divisions"});
-            return keyed([](double size, int divisions) { return make_plane(size, divisions); }, positive("size", 2), count("divisions", 1, 1));
+            return shared(make_plane, positive("size", 2), count("divisions", 1, 1));
         }
         if (type == "uv_sphere") {
             n.expect_object({"type", "radius", "rings", "segments"});
-            return keyed([](double r, int rings, int segments) { return make_uv_sphere(r, rings, segments); }, positive("radius", 1),
-                         count("rings", 32, 2), count("segments", 64, 3));
+            return shared(make_uv_sphere, positive("radius", 1), count("rings", 32, 2), count("segments", 64, 3));
         }
         if (type == "torus") {
             n.expect_object({"type", "major", "minor", "rings", "segments"});
-            return keyed([](double major, double minor, int rings, int segments) { return make_torus(major, minor, rings, segments); },
-                         positive("major", 1), positive("minor", 0.25), count("rings", 48, 3), count("segments", 24, 3));
+            return shared(make_torus, positive("major", 1), positive("minor", 0.25), count("rings", 48, 3), count("segments", 24, 3));
         }
         if (type == "cube") {
             n.expect_object({"type", "size"});
-            return keyed([](double size) { return make_cube(size); }, positive("size", 2));
+            return shared(make_cube, positive("size", 2));
         }
         n["type"].fail("unknown builtin '" + type + "' (expected one of: plane, uv_sphere, torus, cube)");
     }

@@ -191,8 +191,8 @@ void setup_depth_plane(TriangleSetup<N>& t, const PlaneBasis& basis) {
 
 // setup_planes' arithmetic for the varyings and 1/w, four planes at a time: each plane a
 // lane of four-double vectors, through PlaneBasis::at_origin (lane by lane the operations of
-// one plane, in its order: the same bits). The lanes, in order: the N varyings (over w, or themselves for
-// noperspective), 1/w (the plane of 1 over w), then unused lanes. (Depth stays apart, in
+// one plane, in its order: the same bits). The lanes, in order: the N varyings (over w, or
+// themselves for noperspective), 1/w (the plane of 1 over w), then unused lanes. (Depth stays apart, in
 // setup_depth_plane: in a lane of its own vector it came later, and the rasterizer waits
 // on it first.)
 namespace plane_lanes {
@@ -258,11 +258,10 @@ void setup_planes(TriangleSetup<N>& t) {
     }
     using namespace plane_lanes;
     const bool perspective = !t.options.noperspective;
-    const double w[3] = {perspective ? double(v0.window.inv_w) : 1.0, perspective ? double(v1.window.inv_w) : 1.0,
-                         perspective ? double(v2.window.inv_w) : 1.0};
+    auto w = [&](const ShadedVertex<N>& v) { return perspective ? double(v.window.inv_w) : 1.0; };
     [&]<int... Q>(std::integer_sequence<int, Q...>) {
         ([&] {
-            const d4 a0 = corner<N, Q>(v0, w[0]), a1 = corner<N, Q>(v1, w[1]), a2 = corner<N, Q>(v2, w[2]);
+            const d4 a0 = corner<N, Q>(v0, w(v0)), a1 = corner<N, Q>(v1, w(v1)), a2 = corner<N, Q>(v2, w(v2));
             const auto [value, dadx, dady] = basis.at_origin(a0, a1, a2);
             const f4 a = __builtin_convertvector(value, f4), x = __builtin_convertvector(dadx, f4), y = __builtin_convertvector(dady, f4);
             if constexpr (4 * Q + 4 <= N) {  // four varyings' planes in a row, (a, x, y) each: a 4x3 transpose
