@@ -218,7 +218,7 @@ void Texture::sample8(const f8& u, const f8& v, const std::array<f8, 4>& d, cons
 
 void Texture::sample_quad_rows(const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0, const std::array<f8, 4>& d1,
                                const Sampler& s, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) const {
-    // Together where both groups take the common lookup on the same levels, in fixed point.
+    // Together where both groups take the common lookup, in fixed point.
     if (uniform_lookup(pot_, s) && lanes::sample_uniform_rows(pot_levels(), u0, v0, u1, v1, d0, d1, s.mip, rgba0, rgba1)) return;
     sample8(u0, v0, d0, s, rgba0);
     sample8(u1, v1, d1, s, rgba1);

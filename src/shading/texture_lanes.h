@@ -358,8 +358,8 @@ inline Fixed8 bilinear_fixed(const Fixed8 (&c)[4], const i8& fx, const i8& fy) {
 }
 
 // The common lookup (texture_uniform.cpp): a power-of-two texture repeating on both axes,
-// bilinear both ways, no anisotropy, every lane on the same level(s), in the CPU's best copy,
-// in fixed point. The texture's numbers it reads: the first 16 levels' (LevelTables), level
+// bilinear both ways, no anisotropy, every lane on the same level(s) or on one of two
+// neighbouring first levels, in the CPU's best copy, in fixed point. The texture's numbers it reads: the first 16 levels' (LevelTables), level
 // 0's sides, and its texels, an sRGB texture's decoded (Texture::fixed_texels).
 struct PotLevels {
     const uint32_t* texels;
@@ -368,14 +368,15 @@ struct PotLevels {
     int levels;
     float w, h;
 };
-// One group's lookups: false (rgba untouched) if its lanes' levels differ.
+// One group's lookups: false (rgba untouched) if its lanes' first levels differ by more than one.
 bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba);
-// Two groups' lookups (Texture::sample_quad_rows): false (rgba untouched) unless all sixteen
-// lanes take the same level(s) from the same derivatives.
+// Two groups' lookups (Texture::sample_quad_rows): false (rgba untouched) unless both have
+// the same derivatives and all sixteen lanes' first levels are within one of each other.
 bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1);
 // Four groups' lookups (Texture::sample_quad_block): false (rgba untouched) unless groups 0
-// and 1 have the same derivatives, 2 and 3 too, and all 32 lanes take the same level(s).
+// and 1 have the same derivatives, 2 and 3 too, and all 32 lanes' first levels are within one
+// of each other.
 bool sample_uniform_block(const PotLevels& t, const f8* const (&uv)[4], MipFilter mip, std::array<f8, 4> (&rgba)[4]);
 
 }  // namespace softraster::lanes

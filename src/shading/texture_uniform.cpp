@@ -7,8 +7,9 @@ namespace {
 // ---- the common lookup
 //
 // A power-of-two texture repeating on both axes, bilinear both ways, no anisotropy, every lane
-// on the same level(s): what real models and the corridor mostly ask for, filtered in fixed
-// point (sample_uniform_fixed), linear and sRGB textures alike.
+// on the same level(s) or, where the level of detail steps, on one of two neighbouring ones:
+// what real models and the corridor mostly ask for, filtered in fixed point
+// (sample_uniform_fixed), linear and sRGB textures alike.
 // The body of sample_lanes with everything those conditions fix taken out (no level tables,
 // no wrap or filter choices per lane, a level's numbers as scalars), and a small function of
 // its own (the general body's stack frame and dispatch would cost it a sixth of its time):
@@ -61,27 +62,32 @@ inline void level_point_on(const PotLevels& t, const i8& fu, const i8& fv, int k
 #endif
     level_point<Wide, Bits>(t, fu, fv, k, out);
 }
-// The level(s) the lanes read, when all read the same: select_lod's, on eight lanes.
-struct UniformLevels {
-    int level;
-    bool two;  // a second level, level + 1, with these weights
-    f8 weight;
-};
+// The same on lanes at two neighbouring levels, k where `up` is clear and k + 1 where set:
+// each lane's numbers picked from the two, then level_point's arithmetic lane by lane. (For
+// the few groups that straddle the line where the level of detail steps.)
+template <int Bits>
+inline void level_point_lanes(const PotLevels& t, const i8& fu, const i8& fv, int k, const i8& up, LevelPoint& out) {
+    const LevelTables& n = *t.tables;
+    constexpr int kOne = 1 << Bits;
+    auto pick = [&](const std::array<int32_t, 16>& a) { return simd::select(up, simd::splat_i(a[size_t(k) + 1]), simd::splat_i(a[size_t(k)])); };
+    const i8 x = (fu >> pick(n.shift_u)) - kOne / 2, y = (fv >> pick(n.shift_v)) - kOne / 2;
+    const i8 i0 = (x >> Bits) & pick(n.mask_w), j0 = (y >> Bits) & pick(n.mask_h);
+    out = {tile_index8(pick(n.offset), pick(n.tiles_x), i0, j0), x & (kOne - 1), y & (kOne - 1)};
+}
+// Each lane's level(s) of detail (select_lod), from its quad's derivatives d.
 template <bool Wide>
-inline bool uniform_levels(const PotLevels& t, const f8* d, MipFilter mip, UniformLevels& out) {
+inline LaneLod lane_levels(const PotLevels& t, const f8* d, MipFilter mip) {
     using simd::splat, simd::splat_i;
-    LaneLod lod{splat_i(0), splat_i(0), splat(0.0f)};
-    if (mip != MipFilter::None) {
-        f8 rx, ry;
-        footprint_axes8(d, t.w, t.h, rx, ry);
-        const f8 rho2 = simd::select(rx > ry, rx, ry);
-        lod = lane_lod<Wide>(rho2, rho2 > 1.0f, mip, t.levels - 1);
-    }
-    out.level = lod.level0[0];
-    if (simd::any(lod.level0 != out.level)) return false;
-    out.two = simd::any(lod.weight != 0.0f);
-    out.weight = lod.weight;
-    return out.level + (out.two ? 1 : 0) < 16;  // (past the tables otherwise)
+    if (mip == MipFilter::None) return {splat_i(0), splat_i(0), splat(0.0f)};
+    f8 rx, ry;
+    footprint_axes8(d, t.w, t.h, rx, ry);
+    const f8 rho2 = simd::select(rx > ry, rx, ry);
+    return lane_lod<Wide>(rho2, rho2 > 1.0f, mip, t.levels - 1);
+}
+// Whether all lanes read one level (and perhaps the next); if so, which.
+inline bool one_level(const LaneLod& lod, int& level) {
+    level = lod.level0[0];
+    return !simd::any(lod.level0 != level);
 }
 
 // The levels are read before they are known, as a guess: the ones this thread's last lookup
@@ -97,7 +103,7 @@ struct LevelGuess {
 };
 thread_local LevelGuess t_last_levels;  // (below 16 levels: a texture's tables repeat its last level up to there)
 // Whether the levels read were the right ones; if not, the next guess is l's.
-inline bool guessed_right(LevelGuess g, const UniformLevels& l) {
+inline bool guessed_right(LevelGuess g, LevelGuess l) {
     if (g.level == l.level && g.two == l.two) return true;
     t_last_levels = {l.level, l.two};
     return false;
@@ -132,34 +138,55 @@ inline bool sample_uniform_fixed(const PotLevels& t, const f8* const (&u)[G], co
     LevelPoint p[G][2];  // [group][first or second level]
     using Texels = std::conditional_t<Srgb, Fixed8, i8>;
     Texels texel[G][2][4];
-    UniformLevels l[D], all;
-    for (;;) {  // (twice only after a wrong guess, which guessed_right corrects)
-        const LevelGuess guess = t_last_levels;
-        const int levels = guess.two ? 2 : 1;
-        for (int g = 0; g < G; ++g)
-            for (int k = 0; k < levels; ++k) level_point_on<Wide, kBits>(t, fu[g], fv[g], guess.level + k, p[g][k]);
+    auto load = [&](int levels) {
         for (int g = 0; g < G; ++g)
             for (int k = 0; k < levels; ++k) {
                 if constexpr (Srgb) load_footprints_fixed<Wide>(t.fixed_texels, p[g][k].index, texel[g][k]);
                 else load_footprints<Wide>(t.texels, p[g][k].index, texel[g][k]);
             }
-        for (int k = 0; k < D; ++k)
-            if (!uniform_levels<Wide>(t, d[k], mip, l[k]) || l[k].level != l[0].level) return false;
-        all = l[0];
-        for (int k = 1; k < D; ++k) all.two = all.two || l[k].two;  // (a set without a second level blends it by 0: exact)
-        if (all.level + (all.two ? 1 : 0) >= 16) return false;
-        if (guessed_right(guess, all)) [[likely]] break;
+    };
+    LaneLod lod[D];
+    bool two = false;  // a second level to blend in
+    for (;;) {  // (twice only after a wrong guess, which guessed_right corrects)
+        const LevelGuess guess = t_last_levels;
+        for (int g = 0; g < G; ++g)
+            for (int k = 0; k < (guess.two ? 2 : 1); ++k) level_point_on<Wide, kBits>(t, fu[g], fv[g], guess.level + k, p[g][k]);
+        load(guess.two ? 2 : 1);
+        int level[D];
+        bool uniform = true;
+        for (int k = 0; k < D; ++k) {
+            lod[k] = lane_levels<Wide>(t, d[k], mip);
+            uniform = uniform && one_level(lod[k], level[k]) && level[k] == level[0];
+        }
+        two = false;
+        for (int k = 0; k < D; ++k) two = two || simd::any(lod[k].weight != 0.0f);  // (a set without a second level blends it by 0: exact)
+        if (!uniform) {
+            // Lanes on two neighbouring levels (where the level of detail steps from one to
+            // the next): each lane's own numbers, no guess; on more, the general lookup.
+            int low = 16, high = -1;
+            for (int k = 0; k < D; ++k)
+                for (int lane = 0; lane < simd::kLanes; ++lane) low = std::min(low, lod[k].level0[lane]), high = std::max(high, lod[k].level0[lane]);
+            if (high != low + 1 || high + (two ? 1 : 0) >= 16) return false;
+            for (int g = 0; g < G; ++g) {
+                const i8 up = lod[g / (G / D)].level0 != low;
+                for (int k = 0; k < (two ? 2 : 1); ++k) level_point_lanes<kBits>(t, fu[g], fv[g], low + k, up, p[g][k]);
+            }
+            load(two ? 2 : 1);
+            break;
+        }
+        if (level[0] + (two ? 1 : 0) >= 16) return false;  // (past the tables)
+        if (guessed_right(guess, {level[0], two})) [[likely]] break;
     }
     auto bilinear = [&](const Texels (&c)[4], const LevelPoint& at) {
         if constexpr (Srgb) return bilinear_fixed<Wide, kBits>(c, at.fx, at.fy);
         else return bilinear16<Wide>(c, at.fx, at.fy);
     };
     Fixed8 w[D];
-    if (all.two)
-        for (int k = 0; k < D; ++k) spread<Wide>(to_int(l[k].weight * float(1 << kBits)) << (16 - kBits), w[k]);  // (weight in [0, 1): truncation is the floor)
+    if (two)
+        for (int k = 0; k < D; ++k) spread<Wide>(to_int(lod[k].weight * float(1 << kBits)) << (16 - kBits), w[k]);  // (weight in [0, 1): truncation is the floor)
     for (int g = 0; g < G; ++g) {
         Fixed8 f = bilinear(texel[g][0], p[g][0]);
-        if (all.two) {
+        if (two) {
             const Fixed8 f1 = bilinear(texel[g][1], p[g][1]);
             const Fixed8& wg = w[g / (G / D)];
             f = {blend16<Wide>(f.lo, f1.lo, wg.lo), blend16<Wide>(f.hi, f1.hi, wg.hi)};
