@@ -171,7 +171,7 @@ BENCHMARK(BM_TextureTrilinear8<false>);
 BENCHMARK(BM_TextureTrilinear8<true>);
 
 // The same lookups two groups at a time, as the fragment shader asks for them: a row of
-// quads' two pixel rows, one level of detail for both (Texture::sample_quad_rows).
+// quads' two pixel rows, one level of detail for both (Texture::sample_pair).
 void BM_TextureTrilinearRows(benchmark::State& state) {
     Image img(1024, 1024);
     for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = Rgba8{uint8_t(i), uint8_t(i >> 3), uint8_t(i >> 6), 255};
@@ -183,7 +183,7 @@ void BM_TextureTrilinearRows(benchmark::State& state) {
     for (int k = 0; k < simd::kLanes; ++k) u[k] = float(k) * du;
     std::array<simd::f8, 4> rgba0, rgba1;
     for (auto _ : state) {
-        tex.sample_quad_rows(u, v0, u, v1, d, d, s, rgba0, rgba1);
+        tex.sample_pair(u, v0, u, v1, d, d, s, rgba0, rgba1);
         benchmark::DoNotOptimize(rgba0), benchmark::DoNotOptimize(rgba1);
         u = u + 8.0f * du, v0 = v0 + 0.0007f, v1 = v1 + 0.0007f;
         if (u[0] > 64.0f) u = u - 64.0f;

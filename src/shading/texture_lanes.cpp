@@ -216,10 +216,10 @@ void Texture::sample8(const f8& u, const f8& v, const std::array<f8, 4>& d, cons
     });
 }
 
-void Texture::sample_quad_rows(const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0, const std::array<f8, 4>& d1,
-                               const Sampler& s, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) const {
+void Texture::sample_pair(const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0, const std::array<f8, 4>& d1,
+                          const Sampler& s, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) const {
     // Together where both groups take the common lookup, in fixed point.
-    if (uniform_lookup(pot_, s) && lanes::sample_uniform_rows(pot_levels(), u0, v0, u1, v1, d0, d1, s.mip, rgba0, rgba1)) return;
+    if (uniform_lookup(pot_, s) && lanes::sample_uniform_pair(pot_levels(), u0, v0, u1, v1, d0, d1, s.mip, rgba0, rgba1)) return;
     sample8(u0, v0, d0, s, rgba0);
     sample8(u1, v1, d1, s, rgba1);
 }
@@ -228,8 +228,8 @@ void Texture::sample_quad_rows(const f8& u0, const f8& v0, const f8& u1, const f
 // made ahead of the common lookup, on every call.
 [[gnu::noinline]] static void sample_quad_block_by_pairs(const Texture& t, const f8* const (&uv)[4], const Sampler& s, std::array<f8, 4> (&rgba)[4]) {
     const auto d = [&](int g) { return std::array<f8, 4>{uv[g][2], uv[g][3], uv[g][4], uv[g][5]}; };
-    t.sample_quad_rows(uv[0][0], uv[0][1], uv[1][0], uv[1][1], d(0), d(1), s, rgba[0], rgba[1]);
-    t.sample_quad_rows(uv[2][0], uv[2][1], uv[3][0], uv[3][1], d(2), d(3), s, rgba[2], rgba[3]);
+    t.sample_pair(uv[0][0], uv[0][1], uv[1][0], uv[1][1], d(0), d(1), s, rgba[0], rgba[1]);
+    t.sample_pair(uv[2][0], uv[2][1], uv[3][0], uv[3][1], d(2), d(3), s, rgba[2], rgba[3]);
 }
 
 void Texture::sample_quad_block(const f8* const (&uv)[4], const Sampler& s, std::array<f8, 4> (&rgba)[4]) const {

@@ -370,9 +370,9 @@ struct PotLevels {
 };
 // One group's lookups: false (rgba untouched) if its lanes' first levels differ by more than one.
 bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba);
-// Two groups' lookups (Texture::sample_quad_rows): false (rgba untouched) unless both have
-// the same derivatives and all sixteen lanes' first levels are within one of each other.
-bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
+// Two groups' lookups (Texture::sample_pair): false (rgba untouched) unless all sixteen
+// lanes' first levels are within one of each other.
+bool sample_uniform_pair(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1);
 // Four groups' lookups (Texture::sample_quad_block): false (rgba untouched) unless groups 0
 // and 1 have the same derivatives, 2 and 3 too, and all 32 lanes' first levels are within one

@@ -119,8 +119,9 @@ inline i8 fixed_point(const f8& u, float side) {
 
 // The fixed-point filter (sample_level_fixed), for G groups of eight lanes in D sets, each
 // set's groups with the same derivatives d[set]: one group, a row of quads' first and second
-// rows (Texture::sample_quad_rows: one level of detail serves both), or two such pairs side
-// by side (Texture::sample_quad_block), whose levels must then agree too. The work goes
+// rows (Texture::sample_pair: one level of detail serves both), any two groups (each a set
+// of its own), or two pairs of rows side by side (Texture::sample_quad_block). All lanes'
+// first levels must be within one of each other. The work goes
 // phase by phase, all groups' texel addresses, then all their loads, then all the filtering,
 // so that a second group's loads do not queue behind the first's filter (a lookup is a long
 // chain of dependent steps; side by side, they overlap), and one call's fixed costs (the
@@ -213,16 +214,19 @@ inline bool per_kind_and_path(const PotLevels& t, const F& f) {
     return t.fixed_texels ? kind.template operator()<true>() : kind.template operator()<false>();
 }
 
-bool sample_uniform_rows(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
+bool sample_uniform_pair(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) {
     // (All of it in the lambda, the CPU path's own copy: vectors compared or copied outside it
     // would be compiled without AVX, lane by lane.)
     return per_kind_and_path(t, [&]<bool Wide, bool Srgb>() {
-        if (!same_quads<Wide>(d0.data(), d1.data())) return false;
         const f8* const u[2] = {&u0, &u1};
         const f8* const v[2] = {&v0, &v1};
-        const f8* const d[1] = {d0.data()};
         std::array<f8, 4>* const rgba[2] = {&rgba0, &rgba1};
+        if (!same_quads<Wide>(d0.data(), d1.data())) {  // (two groups of different quads: a level of detail each)
+            const f8* const d[2] = {d0.data(), d1.data()};
+            return sample_uniform_fixed<Wide, 2, 2, Srgb>(t, u, v, d, mip, rgba);
+        }
+        const f8* const d[1] = {d0.data()};
         return sample_uniform_fixed<Wide, 2, 1, Srgb>(t, u, v, d, mip, rgba);
     });
 }

@@ -1,11 +1,12 @@
 // The tile loop shades a textured surface's groups two rows at a time (a row of 2x2 quads'
-// first and second rows, fragment_quad_rows; tile_back_end.h), and two such pairs side by
-// side at a time where it can (fragment_quad_block). That must not change the
+// first and second rows, fragment_pair; tile_back_end.h), and two such pairs side by
+// side at a time where it can (fragment_quad_block); the fragment queue's groups of small
+// triangles go two at a time too (fragment_pair, shader_layout.h). That must not change the
 // picture: random textured triangles, drawn by SurfaceShader and by the same shader with
-// fragment_quad_rows taken away (each row's groups on their own), give byte-identical color
+// fragment_pair taken away (each row's groups on their own), give byte-identical color
 // and depth, opaque and blended, for several depth functions and texture filters. The pairs
 // are drawn by the library's compiled pipeline (record_surface_draw), so only the row-by-row
-// shader is compiled here: one lit, textured and colored model, whose fragment_quad_rows is
+// shader is compiled here: one lit, textured and colored model, whose fragment_pair is
 // every model's (SurfaceShader's shading after the lookup is the same code either way).
 #include <gtest/gtest.h>
 
@@ -25,18 +26,18 @@ namespace {
 
 constexpr int W = 211, H = 157;  // not a multiple of 8 or 64, odd
 
-// S without fragment_quad_rows: the tile loop then shades row by row.
+// S without fragment_pair: the tile loop then shades row by row.
 template <class S>
 struct RowByRow : S {
     template <class... A>
-    void fragment_quad_rows(A&&...) const = delete;
+    void fragment_pair(A&&...) const = delete;
 };
 constexpr Shading kModel = Shading::Lambert;  // (lit, yet not so bright that the colors clip)
 using Paired = SurfaceShader<kModel, true, true>;  // what record_surface_draw draws colored textured meshes with
-static_assert(QuadRowShader<Paired>);
+static_assert(PairShader<Paired>);
 static_assert(QuadBlockShader<Paired>);  // (and two pairs side by side, fragment_quad_block: the pictures below cover both)
-static_assert(!QuadRowShader<RowByRow<Paired>>);
-static_assert(!QuadRowShader<SurfaceShader<Shading::Unlit, false, false>>);  // (untextured: nothing to share)
+static_assert(!PairShader<RowByRow<Paired>>);
+static_assert(!PairShader<SurfaceShader<Shading::Unlit, false, false>>);  // (untextured: nothing to share)
 
 // 60 triangles across the picture at random depths and slants (the texture minified on
 // some, magnified on others), some of them back-facing, some odd-sized slivers.

@@ -257,14 +257,14 @@ void expect_batch_equals_scalar(const SurfaceUniforms& u) {
         }
         std::array<simd::f8, 4> batch;
         shader.fragment_batch(in, z, true, batch);
-        if constexpr (QuadRowShader<S>) {  // two rows of quads at once: each as fragment_batch gives it
+        if constexpr (PairShader<S>) {  // two rows of quads at once: each as fragment_batch gives it
             std::array<simd::f8, N> below;
             for (int l = 0; l < simd::kLanes; ++l)
                 for (auto& v : below) v[l] = val(rng);
             for (size_t k = 0; k < 4; ++k)  // (the quads' derivatives, but now and then not)
                 below[size_t(S::Varyings::kUvDerivativesAt) + k] = in[size_t(S::Varyings::kUvDerivativesAt) + k] * (trial % 7 == 0 ? 0.5f : 1.0f);
             std::array<simd::f8, 4> rows[2], alone;
-            shader.fragment_quad_rows(in, below, z, z + 0.1f, true, rows[0], rows[1]);
+            shader.fragment_pair(in, below, z, z + 0.1f, true, rows[0], rows[1]);
             shader.fragment_batch(below, z + 0.1f, true, alone);
             for (int l = 0; l < simd::kLanes; ++l)
                 for (size_t ch = 0; ch < 4; ++ch) {
@@ -281,7 +281,7 @@ void expect_batch_equals_scalar(const SurfaceUniforms& u) {
                 const simd::f8 zs[4] = {z, z + 0.1f, z + 0.2f, z + 0.3f};
                 std::array<simd::f8, 4> block[4], pair[2];
                 shader.fragment_quad_block(block_in, zs, true, block);
-                shader.fragment_quad_rows(next[0], next[1], zs[2], zs[3], true, pair[0], pair[1]);
+                shader.fragment_pair(next[0], next[1], zs[2], zs[3], true, pair[0], pair[1]);
                 const std::array<simd::f8, 4>* want[4] = {&rows[0], &rows[1], &pair[0], &pair[1]};
                 for (size_t g = 0; g < 4; ++g)
                     for (int l = 0; l < simd::kLanes; ++l)

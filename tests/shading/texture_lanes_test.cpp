@@ -117,7 +117,7 @@ TEST(Texture, UniformLookupsAfterOtherLevelsEqualOneAtATime) {
 }
 
 namespace {
-// The cases of the tests of lookups in groups (sample_quad_rows, sample_quad_block): f(texture,
+// The cases of the tests of lookups in groups (sample_pair, sample_quad_block): f(texture,
 // sampler, trial, what) for linear and sRGB textures, power-of-two sides or not, on both CPU
 // paths, each mip filter and wrap mode, 150 trials each; it stops at the first failure.
 template <class F>
@@ -178,10 +178,11 @@ TEST(Texture, QuadBlockLookupsEqualEightAtATime) {
     });
 }
 
-// Two groups at once (sample_quad_rows: a row of quads' two rows) give what each gives alone
-// (sample8): sharing the level of detail where their derivatives are the same (the quads'),
-// each its own where they differ; linear and sRGB, power-of-two sides or not, any sampler.
-TEST(Texture, QuadRowLookupsEqualEightAtATime) {
+// Two groups at once (sample_pair: a row of quads' two rows, or any two, as the fragment
+// queue's groups) give what each gives alone (sample8): sharing the level of detail where
+// their derivatives are the same (the quads'), each its own where they differ; linear and
+// sRGB, power-of-two sides or not, any sampler.
+TEST(Texture, PairLookupsEqualEightAtATime) {
     std::mt19937 rng(13);
     std::uniform_real_distribution<float> coord(-40.0f, 40.0f), log_scale(-14.0f, 3.0f), unit(-1.0f, 1.0f), near(-0.02f, 0.02f);
     for_each_grouped_lookup_case([&](const Texture& t, const Sampler& s, int trial, const std::string& what) {
@@ -194,8 +195,15 @@ TEST(Texture, QuadRowLookupsEqualEightAtATime) {
         }
         d1 = d0;
         if (trial % 5 == 0) d1[1] = d1[1] * 1.5f;  // (not the same quads)
+        if (trial % 5 == 1) {  // any two groups: elsewhere, footprints up to a level or two apart
+            const float apart = std::exp2(2.0f * unit(rng));
+            for (int l = 0; l < simd::kLanes; ++l) {
+                u1[l] = coord(rng), v1[l] = coord(rng);
+                for (size_t k = 0; k < 4; ++k) d1[k][l] = d0[k][l] * apart * (1.0f + 0.1f * unit(rng));
+            }
+        }
         std::array<simd::f8, 4> got0, got1, want0, want1;
-        t.sample_quad_rows(u0, v0, u1, v1, d0, d1, s, got0, got1);
+        t.sample_pair(u0, v0, u1, v1, d0, d1, s, got0, got1);
         t.sample8(u0, v0, d0, s, want0);
         t.sample8(u1, v1, d1, s, want1);
         expect_same_lookups(got0, want0, what + " first row");

@@ -107,21 +107,22 @@ concept BatchShader = Shader<S> && requires(const S s, const std::array<simd::f8
     s.fragment_batch(v, z, true, color);
 };
 
-// A shader may also offer fragment_quad_rows(v0, v1, z0, z1, front_facing, color0, color1):
-// fragment_batch for the two rows of a row of 2x2 quads (eight pixels of a quads' first row
-// and the eight below them) at once, where doing both together is cheaper (a texture's
-// lookups: one level of detail for both). The back end then shades such pairs with one call.
+// A shader may also offer fragment_pair(v0, v1, z0, z1, front_facing, color0, color1):
+// fragment_batch for two groups at once, where doing both together is cheaper (a texture's
+// lookups overlap, and share one level of detail where the two are a row of 2x2 quads' first
+// row and the row below it). The back end then shades such rows, and the fragment queue's
+// groups, two at a time.
 template <class S>
-concept QuadRowShader = BatchShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v,
+concept PairShader = BatchShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v,
                                                    simd::f8 z, std::array<simd::f8, 4>& color) {
-    s.fragment_quad_rows(v, v, z, z, true, color, color);
+    s.fragment_pair(v, v, z, z, true, color, color);
 };
 
 // And fragment_quad_block(v, z, front_facing, color), v, z and color arrays of four: two
-// neighbouring pairs as fragment_quad_rows takes them (groups 0 and 1 the first pair's rows,
+// neighbouring pairs as fragment_pair takes them (groups 0 and 1 the first pair's rows,
 // 2 and 3 the next eight pixels' to the right), where four together are cheaper still.
 template <class S>
-concept QuadBlockShader = QuadRowShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>> (&v)[4],
+concept QuadBlockShader = PairShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>> (&v)[4],
                                                        const simd::f8 (&z)[4], std::array<simd::f8, 4> (&color)[4]) {
     s.fragment_quad_block(v, z, true, color);
 };

@@ -31,7 +31,7 @@ struct VaryingLayout {
     static constexpr int kDerivativeOf = DerivativeOf, kDerivativeAt = DerivativeAt;
     static constexpr bool kPure = Pure;                  // PureShader
     static constexpr bool kBatch = Batch;                // has fragment_batch (BatchShader)
-    static constexpr bool kQuadRows = QuadRows;          // has fragment_quad_rows and derivatives
+    static constexpr bool kQuadRows = QuadRows;          // has fragment_pair and derivatives: quad rows go in pairs
 };
 
 template <class S>
@@ -47,7 +47,7 @@ inline constexpr int kDerivativeAtShader = [] {
 
 template <Shader S>
 using LayoutOf = VaryingLayout<kVaryingCount<typename S::Varyings>, kFlatVaryings<S>, kDerivativeOfShader<S>, kDerivativeAtShader<S>,
-                               PureShader<S>, BatchShader<S>, QuadRowShader<S> && DerivativeShader<S>>;
+                               PureShader<S>, BatchShader<S>, PairShader<S> && DerivativeShader<S>>;
 
 // Groups of eight fragments to shade with one call: each group's window depths, first
 // pixel (x, y) and varyings in, its colors out. In a batch of quad-row pairs, groups 2k and
@@ -94,9 +94,15 @@ struct LayoutShader {
 // ---- a shader's fragment code, compiled once per shader and CPU path
 
 namespace fragment_code {
+// The groups two at a time where the shader takes two (PairShader): any two, each with its
+// own derivatives (the fragment queue's groups hold pixels of neighbouring small triangles).
 template <class S, int N>
 inline void groups(const S& shader, FragmentGroups<N>& b) {
-    if constexpr (requires { shader.batch_constants(); }) {  // what every group uses, read once
+    if constexpr (PairShader<S>) {
+        int g = 0;
+        for (; g + 1 < b.count; g += 2) shader.fragment_pair(b.varyings[g], b.varyings[g + 1], b.z[g], b.z[g + 1], b.front_facing, b.rgba[g], b.rgba[g + 1]);
+        if (g < b.count) shader.fragment_batch(b.varyings[g], b.z[g], b.front_facing, b.rgba[g]);
+    } else if constexpr (requires { shader.batch_constants(); }) {  // what every group uses, read once
         const auto k = shader.batch_constants();
         for (int g = 0; g < b.count; ++g) shader.fragment_batch(k, b.varyings[g], b.z[g], b.front_facing, b.rgba[g]);
     } else {
@@ -120,7 +126,7 @@ inline void quad_rows(const S& shader, FragmentGroups<N>& b) {
                 continue;
             }
         }
-        shader.fragment_quad_rows(b.varyings[g], b.varyings[g + 1], b.z[g], b.z[g + 1], b.front_facing, b.rgba[g], b.rgba[g + 1]);
+        shader.fragment_pair(b.varyings[g], b.varyings[g + 1], b.z[g], b.z[g + 1], b.front_facing, b.rgba[g], b.rgba[g + 1]);
     }
 }
 template <class S, int N>

@@ -276,16 +276,16 @@ struct SurfaceShader {
             shade_batch(k, in, z, nullptr, out);
         }
     }
-    // ... and for the two rows of a row of 2x2 quads (fragment_shading.h), whose texture
-    // lookups go together (Texture::sample_quad_rows).
+    // ... and for two groups (a row of 2x2 quads' two rows, or any two), whose texture lookups
+    // go together (Texture::sample_pair).
     using Batch = std::array<simd::f8, kVaryingCount<Varyings>>;
-    void fragment_quad_rows(const Batch& in0, const Batch& in1, simd::f8 z0, simd::f8 z1, bool, std::array<simd::f8, 4>& out0,
-                            std::array<simd::f8, 4>& out1) const requires(Varyings::kUv) {
+    void fragment_pair(const Batch& in0, const Batch& in1, simd::f8 z0, simd::f8 z1, bool, std::array<simd::f8, 4>& out0,
+                       std::array<simd::f8, 4>& out1) const requires(Varyings::kUv) {
         std::array<simd::f8, 4> tex0, tex1;
         const bool textured = Model != Shading::Pbr || u->texture;
         if (textured)
-            u->texture->sample_quad_rows(in0[Varyings::kUvAt], in0[Varyings::kUvAt + 1], in1[Varyings::kUvAt], in1[Varyings::kUvAt + 1],
-                                         uv_derivatives(in0), uv_derivatives(in1), u->sampler, tex0, tex1);
+            u->texture->sample_pair(in0[Varyings::kUvAt], in0[Varyings::kUvAt + 1], in1[Varyings::kUvAt], in1[Varyings::kUvAt + 1],
+                                    uv_derivatives(in0), uv_derivatives(in1), u->sampler, tex0, tex1);
         const BatchConstants k = batch_constants();
         shade_batch(k, in0, z0, textured ? &tex0 : nullptr, out0);
         shade_batch(k, in1, z1, textured ? &tex1 : nullptr, out1);

@@ -135,14 +135,15 @@ public:
     // into, and one compiled copy (a call per eight texels) keeps the build small.
     void sample8(const simd::f8& u, const simd::f8& v, const std::array<simd::f8, 4>& d, const Sampler& s,
                  std::array<simd::f8, 4>& rgba) const;
-    // The lookups of two groups of eight: a row of 2x2 quads' first and second rows, (u0, v0)
-    // and (u1, v1), their derivatives d0 and d1 (the quads', so the same for both). Each as
-    // sample8 computes it; faster together, as one level of detail serves both and the
-    // second group's loads need not wait behind the first's filter.
-    void sample_quad_rows(const simd::f8& u0, const simd::f8& v0, const simd::f8& u1, const simd::f8& v1, const std::array<simd::f8, 4>& d0,
-                          const std::array<simd::f8, 4>& d1, const Sampler& s, std::array<simd::f8, 4>& rgba0, std::array<simd::f8, 4>& rgba1) const;
+    // The lookups of two groups of eight, (u0, v0) with derivatives d0 and (u1, v1) with d1:
+    // a row of 2x2 quads' first and second rows (the same derivatives, the quads'), or any
+    // two. Each as sample8 computes it; faster together, as the second group's loads need not
+    // wait behind the first's filter, and where the derivatives agree one level of detail
+    // serves both.
+    void sample_pair(const simd::f8& u0, const simd::f8& v0, const simd::f8& u1, const simd::f8& v1, const std::array<simd::f8, 4>& d0,
+                     const std::array<simd::f8, 4>& d1, const Sampler& s, std::array<simd::f8, 4>& rgba0, std::array<simd::f8, 4>& rgba1) const;
 
-    // The lookups of four groups of eight: two neighbouring pairs as sample_quad_rows takes
+    // The lookups of four groups of eight: two neighbouring pairs as sample_pair takes
     // them, groups 0 and 1 one pair's rows, 2 and 3 the other's. Each as sample8 computes it;
     // faster than two pairs, as one call's fixed costs serve all four. Group g's numbers are
     // read where they lie, six vectors in a row from uv[g]: u, v and the derivatives (du/dx,
