@@ -226,15 +226,15 @@ void Texture::sample_pair(const f8& u0, const f8& v0, const f8& u1, const f8& v1
 
 // The four groups as two pairs, out of line: inlined, the copies of their derivatives were
 // made ahead of the common lookup, on every call.
-[[gnu::noinline]] static void sample_quad_block_by_pairs(const Texture& t, const f8* const (&uv)[4], const Sampler& s, std::array<f8, 4> (&rgba)[4]) {
+[[gnu::noinline]] static void sample_four_by_pairs(const Texture& t, const f8* const (&uv)[4], const Sampler& s, std::array<f8, 4> (&rgba)[4]) {
     const auto d = [&](int g) { return std::array<f8, 4>{uv[g][2], uv[g][3], uv[g][4], uv[g][5]}; };
     t.sample_pair(uv[0][0], uv[0][1], uv[1][0], uv[1][1], d(0), d(1), s, rgba[0], rgba[1]);
     t.sample_pair(uv[2][0], uv[2][1], uv[3][0], uv[3][1], d(2), d(3), s, rgba[2], rgba[3]);
 }
 
-void Texture::sample_quad_block(const f8* const (&uv)[4], const Sampler& s, std::array<f8, 4> (&rgba)[4]) const {
-    if (uniform_lookup(pot_, s) && lanes::sample_uniform_block(pot_levels(), uv, s.mip, rgba)) return;
-    sample_quad_block_by_pairs(*this, uv, s, rgba);
+void Texture::sample_four(const f8* const (&uv)[4], const Sampler& s, std::array<f8, 4> (&rgba)[4]) const {
+    if (uniform_lookup(pot_, s) && lanes::sample_uniform_four(pot_levels(), uv, s.mip, rgba)) return;
+    sample_four_by_pairs(*this, uv, s, rgba);
 }
 
 lanes::PotLevels Texture::pot_levels() const {

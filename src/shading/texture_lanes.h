@@ -374,9 +374,9 @@ bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const std::arr
 // lanes' first levels are within one of each other.
 bool sample_uniform_pair(const PotLevels& t, const f8& u0, const f8& v0, const f8& u1, const f8& v1, const std::array<f8, 4>& d0,
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1);
-// Four groups' lookups (Texture::sample_quad_block): false (rgba untouched) unless groups 0
-// and 1 have the same derivatives, 2 and 3 too, and all 32 lanes' first levels are within one
-// of each other.
-bool sample_uniform_block(const PotLevels& t, const f8* const (&uv)[4], MipFilter mip, std::array<f8, 4> (&rgba)[4]);
+// Four groups' lookups (Texture::sample_four): false (rgba untouched) unless all 32 lanes'
+// first levels are within one of each other. (Where groups 0 and 1 have the same
+// derivatives, and 2 and 3 too, each pair takes one level of detail.)
+bool sample_uniform_four(const PotLevels& t, const f8* const (&uv)[4], MipFilter mip, std::array<f8, 4> (&rgba)[4]);
 
 }  // namespace softraster::lanes

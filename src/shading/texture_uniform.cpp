@@ -119,8 +119,8 @@ inline i8 fixed_point(const f8& u, float side) {
 
 // The fixed-point filter (sample_level_fixed), for G groups of eight lanes in D sets, each
 // set's groups with the same derivatives d[set]: one group, a row of quads' first and second
-// rows (Texture::sample_pair: one level of detail serves both), any two groups (each a set
-// of its own), or two pairs of rows side by side (Texture::sample_quad_block). All lanes'
+// rows (Texture::sample_pair: one level of detail serves both), two such pairs side by side
+// (Texture::sample_four), or any two or four groups, each a set of its own. All lanes'
 // first levels must be within one of each other. The work goes
 // phase by phase, all groups' texel addresses, then all their loads, then all the filtering,
 // so that a second group's loads do not queue behind the first's filter (a lookup is a long
@@ -231,15 +231,27 @@ bool sample_uniform_pair(const PotLevels& t, const f8& u0, const f8& v0, const f
     });
 }
 
-bool sample_uniform_block(const PotLevels& t, const f8* const (&uv)[4], MipFilter mip, std::array<f8, 4> (&rgba)[4]) {
-    return per_kind_and_path(t, [&]<bool Wide, bool Srgb>() {
+bool sample_uniform_four(const PotLevels& t, const f8* const (&uv)[4], MipFilter mip, std::array<f8, 4> (&rgba)[4]) {
+    // Two pairs of quad rows first; then (any four groups, or a block whose levels span more
+    // than two) each group with its own derivatives, in a copy of its own. Each copy picks
+    // out the numbers itself: with the two copies in one function, or the numbers picked out
+    // by a helper both share, the first copy's code changed and bench_trilinear took 3 to 6%
+    // longer (docs/performance.md).
+    const bool pairs = per_kind_and_path(t, [&]<bool Wide, bool Srgb>() {
         const f8* const d[4] = {uv[0] + 2, uv[1] + 2, uv[2] + 2, uv[3] + 2};
         if (!same_quads<Wide>(d[0], d[1]) || !same_quads<Wide>(d[2], d[3])) return false;
         const f8* const u[4] = {uv[0], uv[1], uv[2], uv[3]};
         const f8* const v[4] = {uv[0] + 1, uv[1] + 1, uv[2] + 1, uv[3] + 1};
-        const f8* const pairs[2] = {d[0], d[2]};
+        const f8* const sets[2] = {d[0], d[2]};
         std::array<f8, 4>* const out[4] = {&rgba[0], &rgba[1], &rgba[2], &rgba[3]};
-        return sample_uniform_fixed<Wide, 4, 2, Srgb>(t, u, v, pairs, mip, out);
+        return sample_uniform_fixed<Wide, 4, 2, Srgb>(t, u, v, sets, mip, out);
+    });
+    return pairs || per_kind_and_path(t, [&]<bool Wide, bool Srgb>() {
+        const f8* const u[4] = {uv[0], uv[1], uv[2], uv[3]};
+        const f8* const v[4] = {uv[0] + 1, uv[1] + 1, uv[2] + 1, uv[3] + 1};
+        const f8* const d[4] = {uv[0] + 2, uv[1] + 2, uv[2] + 2, uv[3] + 2};
+        std::array<f8, 4>* const out[4] = {&rgba[0], &rgba[1], &rgba[2], &rgba[3]};
+        return sample_uniform_fixed<Wide, 4, 4, Srgb>(t, u, v, d, mip, out);
     });
 }
 

@@ -1,6 +1,6 @@
 // The tile loop shades a textured surface's groups two rows at a time (a row of 2x2 quads'
 // first and second rows, fragment_pair; tile_back_end.h), and two such pairs side by
-// side at a time where it can (fragment_quad_block); the fragment queue's groups of small
+// side at a time where it can (fragment_four); the fragment queue's groups of small
 // triangles go two at a time too (fragment_pair, shader_layout.h). That must not change the
 // picture: random textured triangles, drawn by SurfaceShader and by the same shader with
 // fragment_pair taken away (each row's groups on their own), give byte-identical color
@@ -35,7 +35,7 @@ struct RowByRow : S {
 constexpr Shading kModel = Shading::Lambert;  // (lit, yet not so bright that the colors clip)
 using Paired = SurfaceShader<kModel, true, true>;  // what record_surface_draw draws colored textured meshes with
 static_assert(PairShader<Paired>);
-static_assert(QuadBlockShader<Paired>);  // (and two pairs side by side, fragment_quad_block: the pictures below cover both)
+static_assert(FourShader<Paired>);  // (and two pairs side by side, fragment_four: the pictures below cover both)
 static_assert(!PairShader<RowByRow<Paired>>);
 static_assert(!PairShader<SurfaceShader<Shading::Unlit, false, false>>);  // (untextured: nothing to share)
 

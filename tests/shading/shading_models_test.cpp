@@ -271,7 +271,7 @@ void expect_batch_equals_scalar(const SurfaceUniforms& u) {
                     ASSERT_EQ(std::bit_cast<uint32_t>(rows[0][ch][l]), std::bit_cast<uint32_t>(batch[ch][l])) << "model " << int(M) << " first row";
                     ASSERT_EQ(std::bit_cast<uint32_t>(rows[1][ch][l]), std::bit_cast<uint32_t>(alone[ch][l])) << "model " << int(M) << " second row";
                 }
-            if constexpr (QuadBlockShader<S>) {  // and two such pairs: the first as above, the second as its own pair gives it
+            if constexpr (FourShader<S>) {  // and two such pairs: the first as above, the second as its own pair gives it
                 std::array<simd::f8, N> next[2];
                 for (auto& g : next)
                     for (int l = 0; l < simd::kLanes; ++l)
@@ -280,7 +280,7 @@ void expect_batch_equals_scalar(const SurfaceUniforms& u) {
                 const std::array<simd::f8, N> block_in[4] = {in, below, next[0], next[1]};
                 const simd::f8 zs[4] = {z, z + 0.1f, z + 0.2f, z + 0.3f};
                 std::array<simd::f8, 4> block[4], pair[2];
-                shader.fragment_quad_block(block_in, zs, true, block);
+                shader.fragment_four(block_in, zs, true, block);
                 shader.fragment_pair(next[0], next[1], zs[2], zs[3], true, pair[0], pair[1]);
                 const std::array<simd::f8, 4>* want[4] = {&rows[0], &rows[1], &pair[0], &pair[1]};
                 for (size_t g = 0; g < 4; ++g)

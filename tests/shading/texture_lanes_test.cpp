@@ -117,7 +117,7 @@ TEST(Texture, UniformLookupsAfterOtherLevelsEqualOneAtATime) {
 }
 
 namespace {
-// The cases of the tests of lookups in groups (sample_pair, sample_quad_block): f(texture,
+// The cases of the tests of lookups in groups (sample_pair, sample_four): f(texture,
 // sampler, trial, what) for linear and sRGB textures, power-of-two sides or not, on both CPU
 // paths, each mip filter and wrap mode, 150 trials each; it stops at the first failure.
 template <class F>
@@ -146,10 +146,11 @@ void expect_same_lookups(const std::array<simd::f8, 4>& got, const std::array<si
 }
 }  // namespace
 
-// Four groups at once (sample_quad_block: two neighbouring pairs of a row of quads) give what
-// each gives alone (sample8): one level of detail where both pairs take the same levels, each
-// pair its own where they do not, each group its own where a pair's rows' derivatives differ.
-TEST(Texture, QuadBlockLookupsEqualEightAtATime) {
+// Four groups at once (sample_four: two neighbouring pairs of a row of quads, or any four)
+// give what each gives alone (sample8): one level of detail where both pairs take the same
+// levels, each pair its own where they do not, each group its own where a pair's rows'
+// derivatives differ.
+TEST(Texture, FourGroupLookupsEqualEightAtATime) {
     std::mt19937 rng(17);
     std::uniform_real_distribution<float> coord(-40.0f, 40.0f), log_scale(-14.0f, 3.0f), unit(-1.0f, 1.0f), near(-0.02f, 0.02f);
     for_each_grouped_lookup_case([&](const Texture& t, const Sampler& s, int trial, const std::string& what) {
@@ -168,11 +169,19 @@ TEST(Texture, QuadBlockLookupsEqualEightAtATime) {
         }
         d[1] = d[0], d[3] = d[2];
         if (trial % 5 == 0) d[3][1] = d[3][1] * 1.5f;  // (not the same quads)
+        if (trial % 5 == 1)  // any four groups (the fragment queue's): elsewhere, footprints up to a level or two apart
+            for (size_t g = 1; g < 4; ++g) {
+                const float apart = std::exp2(2.0f * unit(rng));
+                for (int l = 0; l < simd::kLanes; ++l) {
+                    u[g][l] = coord(rng), v[g][l] = coord(rng);
+                    for (size_t k = 0; k < 4; ++k) d[g][k][l] = d[0][k][l] * apart * (1.0f + 0.1f * unit(rng));
+                }
+            }
         std::array<simd::f8, 4> got[4], want[4];
         std::array<simd::f8, 6> in[4];  // (u, v, d in a row, as a shader's varyings hold them)
         for (size_t g = 0; g < 4; ++g) in[g] = {u[g], v[g], d[g][0], d[g][1], d[g][2], d[g][3]};
         const simd::f8* const at[4] = {in[0].data(), in[1].data(), in[2].data(), in[3].data()};
-        t.sample_quad_block(at, s, got);
+        t.sample_four(at, s, got);
         for (int g = 0; g < 4; ++g) t.sample8(u[g], v[g], d[g], s, want[g]);
         for (int g = 0; g < 4; ++g) expect_same_lookups(got[g], want[g], what + " group " + std::to_string(g));
     });

@@ -118,13 +118,14 @@ concept PairShader = BatchShader<S> && requires(const S s, const std::array<simd
     s.fragment_pair(v, v, z, z, true, color, color);
 };
 
-// And fragment_quad_block(v, z, front_facing, color), v, z and color arrays of four: two
-// neighbouring pairs as fragment_pair takes them (groups 0 and 1 the first pair's rows,
-// 2 and 3 the next eight pixels' to the right), where four together are cheaper still.
+// And fragment_four(v, z, front_facing, color), v, z and color arrays of four: four groups,
+// two neighbouring pairs as fragment_pair takes them (groups 0 and 1 the first pair's rows,
+// 2 and 3 the next eight pixels' to the right) or any four, where four together are cheaper
+// still.
 template <class S>
-concept QuadBlockShader = PairShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>> (&v)[4],
+concept FourShader = PairShader<S> && requires(const S s, const std::array<simd::f8, kVaryingCount<typename S::Varyings>> (&v)[4],
                                                        const simd::f8 (&z)[4], std::array<simd::f8, 4> (&color)[4]) {
-    s.fragment_quad_block(v, z, true, color);
+    s.fragment_four(v, z, true, color);
 };
 
 // A shader that never discards and has no side effects says so with

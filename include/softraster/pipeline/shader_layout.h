@@ -94,12 +94,23 @@ struct LayoutShader {
 // ---- a shader's fragment code, compiled once per shader and CPU path
 
 namespace fragment_code {
-// The groups two at a time where the shader takes two (PairShader): any two, each with its
-// own derivatives (the fragment queue's groups hold pixels of neighbouring small triangles).
+// Groups g to g + 3 of the batch with one call (FourShader).
+template <class S, int N>
+inline void four_groups(const S& shader, FragmentGroups<N>& b, size_t g) {
+    const std::array<simd::f8, size_t(N)>(&v)[4] = *reinterpret_cast<const std::array<simd::f8, size_t(N)>(*)[4]>(&b.varyings[g]);
+    const simd::f8(&z)[4] = *reinterpret_cast<const simd::f8(*)[4]>(&b.z[g]);
+    std::array<simd::f8, 4>(&rgba)[4] = *reinterpret_cast<std::array<simd::f8, 4>(*)[4]>(&b.rgba[g]);
+    shader.fragment_four(v, z, b.front_facing, rgba);
+}
+// The groups four or two at a time where the shader takes them (FourShader, PairShader):
+// any groups, each with its own derivatives (the fragment queue's hold pixels of
+// neighbouring small triangles), whose texture lookups then overlap.
 template <class S, int N>
 inline void groups(const S& shader, FragmentGroups<N>& b) {
     if constexpr (PairShader<S>) {
         int g = 0;
+        if constexpr (FourShader<S>)
+            for (; g + 3 < b.count; g += 4) four_groups(shader, b, size_t(g));
         for (; g + 1 < b.count; g += 2) shader.fragment_pair(b.varyings[g], b.varyings[g + 1], b.z[g], b.z[g + 1], b.front_facing, b.rgba[g], b.rgba[g + 1]);
         if (g < b.count) shader.fragment_batch(b.varyings[g], b.z[g], b.front_facing, b.rgba[g]);
     } else if constexpr (requires { shader.batch_constants(); }) {  // what every group uses, read once
@@ -110,18 +121,15 @@ inline void groups(const S& shader, FragmentGroups<N>& b) {
     }
 }
 // Pairs side by side (x eight apart) go four groups at a time where the shader takes four
-// (QuadBlockShader), else each pair alone.
+// (FourShader), else each pair alone.
 template <class S, int N>
 inline void quad_rows(const S& shader, FragmentGroups<N>& b) {
     const int pairs = b.count / 2;
     for (int k = 0; k < pairs; ++k) {
         const size_t g = size_t(2 * k);
-        if constexpr (QuadBlockShader<S>) {
+        if constexpr (FourShader<S>) {
             if (k + 1 < pairs && b.x[g + 2] == b.x[g] + simd::kLanes && b.y[g + 2] == b.y[g]) {
-                const std::array<simd::f8, size_t(N)>(&v)[4] = *reinterpret_cast<const std::array<simd::f8, size_t(N)>(*)[4]>(&b.varyings[g]);
-                const simd::f8(&z)[4] = *reinterpret_cast<const simd::f8(*)[4]>(&b.z[g]);
-                std::array<simd::f8, 4>(&rgba)[4] = *reinterpret_cast<std::array<simd::f8, 4>(*)[4]>(&b.rgba[g]);
-                shader.fragment_quad_block(v, z, b.front_facing, rgba);
+                four_groups(shader, b, g);
                 ++k;
                 continue;
             }

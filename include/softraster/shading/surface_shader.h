@@ -291,17 +291,17 @@ struct SurfaceShader {
         shade_batch(k, in1, z1, textured ? &tex1 : nullptr, out1);
     }
 
-    // ... and for two such pairs side by side (fragment_shading.h), whose lookups go together
-    // too (Texture::sample_quad_block). Not for PBR: its four inlined shadings made its draw
+    // ... and for four groups (two such pairs side by side, or any four), whose lookups go
+    // together too (Texture::sample_four). Not for PBR: its four inlined shadings made its draw
     // code the slowest file of the build by a quarter more, and its frame no faster
     // (docs/performance.md, "Four groups a call").
-    void fragment_quad_block(const Batch (&in)[4], const simd::f8 (&z)[4], bool, std::array<simd::f8, 4> (&out)[4]) const
+    void fragment_four(const Batch (&in)[4], const simd::f8 (&z)[4], bool, std::array<simd::f8, 4> (&out)[4]) const
         requires(Varyings::kUv && Model != Shading::Pbr) {
         std::array<simd::f8, 4> tex[4];  // (not PBR: the texture is always there)
         static_assert(Varyings::kUvDerivativesAt == Varyings::kUvAt + 2, "u, v and their derivatives in a row, as the lookup reads them");
         constexpr size_t uv = Varyings::kUvAt;
         const simd::f8* const at[4] = {&in[0][uv], &in[1][uv], &in[2][uv], &in[3][uv]};
-        u->texture->sample_quad_block(at, u->sampler, tex);
+        u->texture->sample_four(at, u->sampler, tex);
         const BatchConstants k = batch_constants();
         for (size_t g = 0; g < 4; ++g) shade_batch(k, in[g], z[g], &tex[g], out[g]);
     }

@@ -144,12 +144,13 @@ public:
                      const std::array<simd::f8, 4>& d1, const Sampler& s, std::array<simd::f8, 4>& rgba0, std::array<simd::f8, 4>& rgba1) const;
 
     // The lookups of four groups of eight: two neighbouring pairs as sample_pair takes
-    // them, groups 0 and 1 one pair's rows, 2 and 3 the other's. Each as sample8 computes it;
-    // faster than two pairs, as one call's fixed costs serve all four. Group g's numbers are
+    // them, groups 0 and 1 one pair's rows, 2 and 3 the other's, or any four (each with its
+    // own derivatives). Each as sample8 computes it; faster than two pairs, as one call's
+    // fixed costs serve all four. Group g's numbers are
     // read where they lie, six vectors in a row from uv[g]: u, v and the derivatives (du/dx,
     // dv/dx, du/dy, dv/dy), as a shader's varyings hold them (SurfaceShader's Varyings), so
     // that the shader need not copy 24 vectors into a call's arguments.
-    void sample_quad_block(const simd::f8* const (&uv)[4], const Sampler& s, std::array<simd::f8, 4> (&rgba)[4]) const;
+    void sample_four(const simd::f8* const (&uv)[4], const Sampler& s, std::array<simd::f8, 4> (&rgba)[4]) const;
 
     LevelChoice select_lod(const UvDerivatives& d, const Sampler& s) const;
 
