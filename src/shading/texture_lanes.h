@@ -359,8 +359,9 @@ inline Fixed8 bilinear_fixed(const Fixed8 (&c)[4], const i8& fx, const i8& fy) {
 
 // The common lookup (texture_uniform.cpp): a power-of-two texture repeating on both axes,
 // bilinear both ways, no anisotropy, every lane on the same level(s) or on one of two
-// neighbouring first levels, in the CPU's best copy, in fixed point. The texture's numbers it reads: the first 16 levels' (LevelTables), level
-// 0's sides, and its texels, an sRGB texture's decoded (Texture::fixed_texels).
+// neighbouring first levels, in the CPU's best copy, in fixed point. The texture's numbers
+// it reads: the first 16 levels' (LevelTables), level 0's sides, and its texels, an sRGB
+// texture's decoded (Texture::fixed_texels).
 struct PotLevels {
     const uint32_t* texels;
     const uint64_t* fixed_texels;  // an sRGB texture's; null for a linear one

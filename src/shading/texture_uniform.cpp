@@ -20,13 +20,19 @@ namespace {
 struct LevelPoint {
     i8 index, fx, fy;
 };
-template <bool Wide, int Bits>
-inline void level_point(const PotLevels& t, const i8& fu, const i8& fv, int k, LevelPoint& out) {
+// The level's numbers are number(table): one level's for all lanes (level_point), or each
+// lane's own (level_point_lanes).
+template <int Bits, class Number>
+inline void level_point_of(const PotLevels& t, const i8& fu, const i8& fv, const Number& number, LevelPoint& out) {
     const LevelTables& n = *t.tables;
     constexpr int kOne = 1 << Bits;
-    const i8 x = (fu >> n.shift_u[k]) - kOne / 2, y = (fv >> n.shift_v[k]) - kOne / 2;
-    const i8 i0 = (x >> Bits) & n.mask_w[k], j0 = (y >> Bits) & n.mask_h[k];
-    out = {tile_index8(n.offset[k], n.tiles_x[k], i0, j0), x & (kOne - 1), y & (kOne - 1)};
+    const i8 x = (fu >> number(n.shift_u)) - kOne / 2, y = (fv >> number(n.shift_v)) - kOne / 2;
+    const i8 i0 = (x >> Bits) & number(n.mask_w), j0 = (y >> Bits) & number(n.mask_h);
+    out = {tile_index8(number(n.offset), number(n.tiles_x), i0, j0), x & (kOne - 1), y & (kOne - 1)};
+}
+template <bool Wide, int Bits>
+inline void level_point(const PotLevels& t, const i8& fu, const i8& fv, int k, LevelPoint& out) {
+    level_point_of<Bits>(t, fu, fv, [k](const std::array<int32_t, 16>& a) { return a[size_t(k)]; }, out);
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 // The level's numbers come as broadcasts from memory (LevelTables), and the shifts by them
@@ -62,21 +68,16 @@ inline void level_point_on(const PotLevels& t, const i8& fu, const i8& fv, int k
 #endif
     level_point<Wide, Bits>(t, fu, fv, k, out);
 }
-// The same on lanes at two neighbouring levels, k where `up` is clear and k + 1 where set:
-// each lane's numbers picked from the two, then level_point's arithmetic lane by lane. (For
-// the few groups that straddle the line where the level of detail steps.)
+// The same on lanes at two neighbouring levels, k where `up` is clear and k + 1 where set.
+// (For the few groups that straddle the line where the level of detail steps.)
 template <int Bits>
 inline void level_point_lanes(const PotLevels& t, const i8& fu, const i8& fv, int k, const i8& up, LevelPoint& out) {
-    const LevelTables& n = *t.tables;
-    constexpr int kOne = 1 << Bits;
-    auto pick = [&](const std::array<int32_t, 16>& a) { return simd::select(up, simd::splat_i(a[size_t(k) + 1]), simd::splat_i(a[size_t(k)])); };
-    const i8 x = (fu >> pick(n.shift_u)) - kOne / 2, y = (fv >> pick(n.shift_v)) - kOne / 2;
-    const i8 i0 = (x >> Bits) & pick(n.mask_w), j0 = (y >> Bits) & pick(n.mask_h);
-    out = {tile_index8(pick(n.offset), pick(n.tiles_x), i0, j0), x & (kOne - 1), y & (kOne - 1)};
+    level_point_of<Bits>(
+        t, fu, fv, [&](const std::array<int32_t, 16>& a) { return simd::select(up, simd::splat_i(a[size_t(k) + 1]), simd::splat_i(a[size_t(k)])); }, out);
 }
 // Each lane's level(s) of detail (select_lod), from its quad's derivatives d.
 template <bool Wide>
-inline LaneLod lane_levels(const PotLevels& t, const f8* d, MipFilter mip) {
+inline LaneLod lods_of_derivatives(const PotLevels& t, const f8* d, MipFilter mip) {
     using simd::splat, simd::splat_i;
     if (mip == MipFilter::None) return {splat_i(0), splat_i(0), splat(0.0f)};
     f8 rx, ry;
@@ -156,7 +157,7 @@ inline bool sample_uniform_fixed(const PotLevels& t, const f8* const (&u)[G], co
         int level[D];
         bool uniform = true;
         for (int k = 0; k < D; ++k) {
-            lod[k] = lane_levels<Wide>(t, d[k], mip);
+            lod[k] = lods_of_derivatives<Wide>(t, d[k], mip);
             uniform = uniform && one_level(lod[k], level[k]) && level[k] == level[0];
         }
         two = false;
