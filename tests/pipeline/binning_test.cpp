@@ -1,7 +1,7 @@
 // Binning: every triangle that survives culling lands in exactly the tiles its sample bounds
 // touch (a large one: those it overlaps), in draw order within each tile, and nowhere else;
 // the per-tile covered area is the sum the tiles' triangles contribute; a chunk counts only
-// its own range of tiles.
+// its own range of tiles; a small triangle that covers no sample is dropped, and no other.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 #include <random>
 
 #include "softraster/pipeline/binning.h"
+#include "softraster/pipeline/rasterization.h"
 #include "test_support.h"
 
 using namespace softraster;
@@ -47,6 +48,43 @@ double area_in_rect(const ShadedVertex<1>& a, const ShadedVertex<1>& b, const Sh
     return sum;
 }
 
+// Whether the rasterizer (rasterization.h, 64-bit edges) finds a sample of triangle abc
+// covered, anywhere in the viewport, single-sampled.
+bool covers_a_sample(const ShadedVertex<1>& a, const ShadedVertex<1>& b, const ShadedVertex<1>& c) {
+    TriangleSetup<1> t;
+    if (!setup_triangle<1>(a, b, c, FrontFace::CCW, Rect{0, 0, W, H}, t)) return false;
+    bool covered = false;
+    rasterize_triangle<1>(t, t.bounds, [&](const CoveredPixel<1>&) { covered = true; });
+    return covered;
+}
+
+// Whether a pixel center of the triangle's bounds is inside its three edges or on one, in
+// 64-bit integers.
+bool touches_a_center(const ShadedVertex<1>& a, const ShadedVertex<1>& b, const ShadedVertex<1>& c) {
+    const Rect r = pixel_bounds<1>(a, b, c);
+    const ShadedVertex<1>* v[3] = {&a, &b, &c};
+    const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) {
+            const int64_t cx = int64_t(x) * 256 + 128, cy = int64_t(y) * 256 + 128;
+            int inside = 0;
+            for (int e = 0; e < 3; ++e) {
+                const ShadedVertex<1>&p = *v[e], &q = *v[(e + 1) % 3];
+                const int64_t edge = int64_t(q.X - p.X) * (cy - p.Y) - int64_t(q.Y - p.Y) * (cx - p.X);
+                inside += area2 > 0 ? edge >= 0 : edge <= 0;
+            }
+            if (inside == 3) return true;
+        }
+    return false;
+}
+
+// Whether binning drops the triangle though its bounds hold samples: one at most two pixels
+// each way with no center inside or on an edge (covers_no_center).
+bool dropped_as_empty(const ShadedVertex<1>& a, const ShadedVertex<1>& b, const ShadedVertex<1>& c) {
+    const Rect r = pixel_bounds<1>(a, b, c);
+    return r.x1 - r.x0 <= 2 && r.y1 - r.y0 <= 2 && !touches_a_center(a, b, c);
+}
+
 // What binning must produce, computed directly: each triangle tested against each tile. A
 // large triangle (its bounds span kLargeTriangleTiles tiles or more) is in the tiles it
 // overlaps, with the area it covers there; a small one in every tile its bounds touch, with
@@ -59,7 +97,7 @@ Expected expected_bins(const std::vector<ShadedVertex<1>>& post, FaceState faces
         const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
         if (!survives_culling(area2, faces)) continue;
         const Rect bounds = intersect(pixel_bounds<1>(a, b, c), Rect{0, 0, W, H});
-        if (bounds.empty()) continue;
+        if (bounds.empty() || dropped_as_empty(a, b, c)) continue;
         const bool large = (bounds.x1 - 1) / kTileSize - bounds.x0 / kTileSize + 1 >= kLargeTriangleTiles ||
                            (bounds.y1 - 1) / kTileSize - bounds.y0 / kTileSize + 1 >= kLargeTriangleTiles;
         for (int tile = 0; tile < grid.count(); ++tile) {
@@ -144,4 +182,63 @@ TEST(Binning, TriangleCoveringNoSampleIsDropped) {
                      TileGrid(W, H), bin);
     EXPECT_TRUE(bin.refs.empty());
     EXPECT_EQ(bin.range.count(), 0);
+}
+
+TEST(Binning, SmallTriangleBetweenPixelCentersIsDropped) {
+    // Its box holds the center of pixel (10, 10), (10.5, 10.5), but its long edge passes
+    // short of it (x + y = 20.9): it covers no sample, and reaches no tile.
+    ShadedVertex<1> v[3];
+    const glm::vec2 p[3] = {{10.0f, 10.0f}, {10.9f, 10.0f}, {10.0f, 10.9f}};
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(finish_vertex(ClipVertex<1>{window_to_clip(p[i].x, p[i].y, W, H), {}}, Viewport{W, H}, v[i]));
+    ASSERT_FALSE(pixel_bounds<1>(v[0], v[1], v[2]).empty());
+    const uint32_t idx[3] = {0, 1, 2};
+    TriangleBin<1> bin;
+    bin_triangles(idx, v, ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
+                  TileGrid(W, H), bin);
+    EXPECT_TRUE(bin.refs.empty());
+}
+
+// Tiny triangles, as a mesh finer than the pixels has: binning keeps each one that covers a
+// sample, and each with a center on an edge (whichever edge owns it); it drops those whose
+// bounds, at most two pixels each way, have no center inside or on an edge. With 4x MSAA it
+// keeps every one whose bounds hold a sample.
+TEST(Binning, DropsSmallTrianglesThatCoverNoSampleAndNoOther) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0, 1);
+    const TileGrid grid(W, H);
+    int dropped = 0, kept = 0, on_edge = 0;
+    for (int k = 0; k < 20000; ++k) {
+        std::array<ShadedVertex<1>, 3> p;
+        if (k % 4 == 0) {  // corners on a quarter-pixel lattice: centers fall on edges
+            const float x = float(8 + int(200 * u(rng))), y = float(8 + int(200 * u(rng)));
+            for (auto& v : p) {
+                const float px = x + 0.25f * float(int(12 * u(rng))), py = y + 0.25f * float(int(12 * u(rng)));
+                ASSERT_TRUE(finish_vertex(ClipVertex<1>{window_to_clip(px, py, W, H), {}}, Viewport{W, H}, v));
+            }
+        } else if (!random_triangle(rng, 8 + 240 * u(rng), 8 + 240 * u(rng), 0.3f + 3 * u(rng), 0.3f + 3 * u(rng), p)) {
+            continue;
+        }
+        const int64_t area2 = signed_area2(p[0].X, p[0].Y, p[1].X, p[1].Y, p[2].X, p[2].Y);
+        if (area2 == 0) continue;
+        const uint32_t idx[3] = {0, 1, 2};
+        TriangleBin<1> bin;
+        bin_triangles(idx, p.data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW},
+                      FlatVaryings{}, grid, bin);
+        const Rect r = pixel_bounds<1>(p[0], p[1], p[2]);
+        const bool covers = covers_a_sample(p[0], p[1], p[2]), touches = touches_a_center(p[0], p[1], p[2]);
+        ASSERT_TRUE(touches || !covers) << "triangle " << k;
+        const bool small = r.x1 - r.x0 <= 2 && r.y1 - r.y0 <= 2;
+        ASSERT_EQ(bin.refs.empty(), r.empty() || (small && !touches)) << "triangle " << k;
+        dropped += !r.empty() && bin.refs.empty();
+        kept += !bin.refs.empty();
+        on_edge += touches && !covers;  // kept for a center on an edge the fill rule gives away
+        // 4x MSAA: no triangle whose bounds hold a sample is dropped
+        TriangleBin<1> msaa;
+        bin_triangles(idx, p.data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<4>(), FaceState{CullMode::None, FrontFace::CCW},
+                      FlatVaryings{}, grid, msaa);
+        ASSERT_EQ(msaa.refs.empty(), pixel_bounds<4>(p[0], p[1], p[2]).empty()) << "triangle " << k;
+    }
+    EXPECT_GT(dropped, 2000);
+    EXPECT_GT(kept, 2000);
+    EXPECT_GT(on_edge, 100);
 }

@@ -195,9 +195,42 @@ void bin_pending(TriangleBin<N>& bin, size_t expected, Fill&& fill) {
     if (scratch.capacity() > kKeptPending) scratch = {};
 }
 
+// Whether a triangle (corners a, b, c in snapped window coordinates, twice its signed area
+// area2) whose pixel bounds `r` are at most two pixels each way certainly covers none of their
+// samples, in a single-sampled framebuffer (s one point): no pixel center of the bounds is
+// inside its three edges or on one. Such a triangle (a third of those that reach a tile in
+// a mesh about as fine as the pixels) would cost its tile a setup and a walk over its bounds
+// for nothing. Its corners lie within three pixels of each other, so each edge function at
+// a center is a product of numbers below 2^11: exact in 32 bits, four centers at a time
+// without a branch. (A center on an edge counts as inside whatever the fill rule, so the
+// test drops nothing the rasterizer would draw.)
+template <class V>
+bool covers_no_center(const V& a, const V& b, const V& c, const Rect& r, const SampleExtent& s, int64_t area2) {
+    if (s.x_lo != s.x_hi || s.y_lo != s.y_hi || r.x1 - r.x0 > 2 || r.y1 - r.y0 > 2) return false;
+    // Edge k from corner k to the next: E(P) = (e.x)(P.y - k.y) - (e.y)(P.x - k.x), of area2's
+    // sign inside (E at the third corner is area2), as in add_large_to_tiles; relative to the
+    // first center, (r.x0, r.y0)'s.
+    const int32_t ox = r.x0 * int32_t(kSubpixelOne) + s.x_lo, oy = r.y0 * int32_t(kSubpixelOne) + s.y_lo;
+    const int32_t xs[3] = {a.X - ox, b.X - ox, c.X - ox}, ys[3] = {a.Y - oy, b.Y - oy, c.Y - oy};
+    const int32_t sign = area2 < 0 ? -1 : 1;
+    // center k of the 2x2 block at (k & 1, k >> 1) pixels from the first; those past the bounds stay out
+    int32_t inside[4];
+    for (int k = 0; k < 4; ++k) {
+        const int32_t px = (k & 1) * int32_t(kSubpixelOne), py = (k >> 1) * int32_t(kSubpixelOne);
+        int32_t in = ((k & 1) < r.x1 - r.x0) & ((k >> 1) < r.y1 - r.y0);
+        for (int e = 0; e < 3; ++e) {
+            const int n = (e + 1) % 3;
+            in &= sign * ((xs[n] - xs[e]) * (py - ys[e]) - (ys[n] - ys[e]) * (px - xs[e])) >= 0;
+        }
+        inside[k] = in;
+    }
+    return (inside[0] | inside[1] | inside[2] | inside[3]) == 0;
+}
+
 // The front end's triangle half for one chunk of a draw, stage by stage: primitive assembly
 // and clipping (primitive_assembly.h), culling (culling.h), binning. A triangle whose bounds
-// hold no sample of the framebuffer's pattern (its extent `samples`, sample_pattern.h) is dropped.
+// hold no sample of the framebuffer's pattern (its extent `samples`, sample_pattern.h) is
+// dropped, and so is a small one that covers none of its bounds' samples (covers_no_center).
 template <int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
                    const Viewport& vp, const SampleExtent& samples, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
@@ -208,7 +241,9 @@ void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* pos
             const ShadedVertex<N>&a = bin.vertex(ia, post), &b = bin.vertex(ib, post), &c = bin.vertex(ic, post);
             const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
             if (!survives_culling(area2, faces)) return;
-            add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, a, b, c, pixel_bounds(a, b, c, samples), area2);
+            const Rect bounds = pixel_bounds(a, b, c, samples);
+            if (bounds.empty() || covers_no_center(a, b, c, bounds, samples, area2)) return;
+            add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, a, b, c, bounds, area2);
         });
     });
 }
