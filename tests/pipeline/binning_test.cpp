@@ -95,7 +95,7 @@ Expected expected_bins(const std::vector<ShadedVertex<1>>& post, FaceState faces
     for (uint32_t t = 0; t < post.size() / 3; ++t) {
         const ShadedVertex<1>&a = post[3 * t], &b = post[3 * t + 1], &c = post[3 * t + 2];
         const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
-        if (!survives_culling(area2, faces)) continue;
+        if (!WindingFilter(faces).survives(area2)) continue;
         const Rect bounds = intersect(pixel_bounds<1>(a, b, c), Rect{0, 0, W, H});
         if (bounds.empty() || dropped_as_empty(a, b, c)) continue;
         const bool large = (bounds.x1 - 1) / kTileSize - bounds.x0 / kTileSize + 1 >= kLargeTriangleTiles ||

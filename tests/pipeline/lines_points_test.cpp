@@ -2,6 +2,7 @@
 // their clipping, and flat varyings with the provoking vertex.
 #include <gtest/gtest.h>
 
+#include <climits>
 #include <cmath>
 #include <set>
 
@@ -226,6 +227,15 @@ TEST(PrimitiveAssembly, IndexOutOfRangeThrows) {
     Context ctx(fb);
     std::vector<ClipVertexIn> v = {{glm::vec4(0, 0, 0, 1), 0}};
     EXPECT_THROW(draw(ctx, ConstantColorShader{}, v, {0, 0, 1}), std::out_of_range);
+    // In a long buffer (the vectorized part of the check, not its tail): one past the end,
+    // the largest index, and none.
+    std::vector<uint32_t> idx(300, 0);
+    idx[151] = 1;
+    EXPECT_THROW(draw(ctx, ConstantColorShader{}, v, idx), std::out_of_range);
+    idx[151] = UINT32_MAX;
+    EXPECT_THROW(draw(ctx, ConstantColorShader{}, v, idx), std::out_of_range);
+    idx[151] = 0;
+    EXPECT_NO_THROW(draw(ctx, ConstantColorShader{}, v, idx));
 }
 
 TEST(PrimitiveAssembly, NonFinitePositionsDropOnlyTheirTriangles) {

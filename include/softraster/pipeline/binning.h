@@ -28,11 +28,6 @@
 
 namespace softraster {
 
-// A binned triangle: its corners (primitive_assembly.h, corner_vertex).
-struct TriangleRef {
-    uint32_t v[3];
-};
-
 template <int N>
 struct TriangleBin {
     std::vector<ShadedVertex<N>> clipped;  // vertices the clipper made
@@ -134,17 +129,24 @@ template <int N, class V>
 // may lie in pixels `bounds` and whose snapped area is |area2| / 2 in 1/256-pixel units
 // squared, to every tile of `grid` the bounds touch, with the area it covers there for the
 // hidden-surface decision (hidden_surface_removal.h); a large one only to the tiles it may
-// cover (add_large_to_tiles).
+// cover (add_large_to_tiles). `tiles` grows to hold the tiles its bounds touch (a large
+// triangle may skip its corner tiles: the chunk's range holds them all the same, as it
+// needs only hold them). (The caller keeps `tiles` in a local, not in the bin: there, each
+// triangle's pending store could alias it, and it would be loaded and stored each time.)
 template <int N, class V>
-void add_to_tiles(TriangleBin<N>& bin, const TileGrid& grid, TriangleRef ref, const V& a, const V& b, const V& c, Rect bounds, int64_t area2) {
+void add_to_tiles(TriangleBin<N>& bin, TileBounds& tiles, const TileGrid& grid, TriangleRef ref, const V& a, const V& b, const V& c, Rect bounds,
+                  int64_t area2) {
     const Rect r = intersect(bounds, Rect{0, 0, grid.width, grid.height});
     if (r.empty()) return;
     const int tx0 = r.x0 / kTileSize, tx1 = (r.x1 - 1) / kTileSize, ty0 = r.y0 / kTileSize, ty1 = (r.y1 - 1) / kTileSize;
-    bin.range.include(tx0, ty0);  // (a large triangle may skip its corner tiles: the range
-    bin.range.include(tx1, ty1);  // holds its bounds all the same, as it needs only hold them)
+    tiles.include(tx0, ty0, tx1, ty1);
+    const float area = float(area2 < 0 ? -area2 : area2) * (0.5f / float(kSubpixelOne * kSubpixelOne));
+    if (tx0 == tx1 && ty0 == ty1) {  // in one tile, as most triangles of a detailed mesh
+        bin.pending.push_back({uint16_t(tx0), uint16_t(ty0), std::min(float((r.x1 - r.x0) * (r.y1 - r.y0)), area), ref});
+        return;
+    }
     if (area2 != 0 && (tx1 - tx0 + 1 >= kLargeTriangleTiles || ty1 - ty0 + 1 >= kLargeTriangleTiles))
         return add_large_to_tiles(bin, grid, ref, a, b, c, tx0, ty0, tx1, ty1, area2);
-    const float area = float(area2 < 0 ? -area2 : area2) * (0.5f / float(kSubpixelOne * kSubpixelOne));
     for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) {
             const int w = std::min(r.x1, (tx + 1) * kTileSize) - std::max(r.x0, tx * kTileSize);
@@ -235,16 +237,18 @@ template <int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
                    const Viewport& vp, const SampleExtent& samples, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
-    bin.range = {};
+    const WindingFilter windings(faces);
     bin_pending(bin, indices.size() / 3, [&] {  // (most triangles touch one tile)
-        assemble_triangles(indices, post, planes, vp, flat, bin.clipped, [&](uint32_t ia, uint32_t ib, uint32_t ic) {
-            const ShadedVertex<N>&a = bin.vertex(ia, post), &b = bin.vertex(ib, post), &c = bin.vertex(ic, post);
-            const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
-            if (!survives_culling(area2, faces)) return;
-            const Rect bounds = pixel_bounds(a, b, c, samples);
-            if (bounds.empty() || covers_no_center(a, b, c, bounds, samples, area2)) return;
-            add_to_tiles(bin, grid, TriangleRef{{ia, ib, ic}}, a, b, c, bounds, area2);
-        });
+        TileBounds tiles;
+        assemble_triangles(indices, post, planes, vp, flat, bin.clipped,
+                           [&](TriangleRef ref, const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c) {
+                               const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
+                               if (!windings.survives(area2)) return;
+                               const Rect bounds = pixel_bounds(a, b, c, samples);
+                               if (bounds.empty() || covers_no_center(a, b, c, bounds, samples, area2)) return;
+                               add_to_tiles(bin, tiles, grid, ref, a, b, c, bounds, area2);
+                           });
+        bin.range = tiles.range();
     });
 }
 

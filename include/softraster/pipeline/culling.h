@@ -35,9 +35,15 @@ struct FaceState {
     FrontFace front = FrontFace::CCW;
 };
 
-// Whether a triangle of snapped signed area `area2` goes on down the pipeline.
-inline bool survives_culling(int64_t area2, FaceState faces) {
-    return area2 != 0 && !is_culled(is_front_facing(/*ccw_on_screen=*/area2 < 0, faces.front), faces.cull);
-}
+// The windings a draw's face state keeps, found once per draw: a triangle is then kept or
+// culled by its area's sign alone (binning culls millions a frame).
+struct WindingFilter {
+    bool keep_cw, keep_ccw;  // on screen
+    explicit WindingFilter(FaceState f)
+        : keep_cw(!is_culled(is_front_facing(/*ccw_on_screen=*/false, f.front), f.cull)),
+          keep_ccw(!is_culled(is_front_facing(/*ccw_on_screen=*/true, f.front), f.cull)) {}
+    // Whether a triangle of snapped signed area `area2` goes on down the pipeline.
+    bool survives(int64_t area2) const { return area2 > 0 ? keep_cw : area2 < 0 && keep_ccw; }
+};
 
 }  // namespace softraster

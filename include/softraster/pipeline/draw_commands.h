@@ -103,9 +103,10 @@ protected:
         }
         one_bin_begin_ = nullptr;
         one_bin_area_ = nullptr;
-        range_ = {};
+        TileBounds all;
         for (const TriangleBin<N>& bin : bins)
-            if (bin.range.count() > 0) range_.include(bin.range.x0, bin.range.y0), range_.include(bin.range.x1 - 1, bin.range.y1 - 1);
+            if (bin.range.count() > 0) all.include(bin.range.x0, bin.range.y0, bin.range.x1 - 1, bin.range.y1 - 1);
+        range_ = all.range();
         tile_triangles_.assign(size_t(range_.count()), 0);
         tile_area_.assign(size_t(range_.count()), 0.0);
         for (const TriangleBin<N>& bin : bins)

@@ -152,8 +152,8 @@ template <int N>
 void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
                       const Viewport& vp, const SampleExtent& samples, const LinePointShape& shape, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
-    bin.range = {};
     bin_pending(bin, 2 * indices.size(), [&] {  // (two triangles a quad)
+        TileBounds tiles;
         std::vector<WindowVertex<N>> window;
         assemble_lines_points(topology, indices, post, planes, vp, window);
         auto emit = [&](const ShadedVertex<N>& c0, const ShadedVertex<N>& c1, const ShadedVertex<N>& c2, const ShadedVertex<N>& c3) {
@@ -165,7 +165,7 @@ void bin_lines_points(Topology topology, std::span<const uint32_t> indices, cons
                 int64_t area2 = signed_area2(p.X, p.Y, q.X, q.Y, r.X, r.Y);
                 if (area2 == 0) continue;
                 if (!is_front_facing(area2 < 0, shape.front)) std::swap(v[1], v[2]), area2 = -area2;  // lines and points face front
-                add_to_tiles(bin, grid, TriangleRef{{v[0] | kClippedVertex, v[1] | kClippedVertex, v[2] | kClippedVertex}},
+                add_to_tiles(bin, tiles, grid, TriangleRef{{v[0] | kClippedVertex, v[1] | kClippedVertex, v[2] | kClippedVertex}},
                              bin.clipped[v[0]], bin.clipped[v[1]], bin.clipped[v[2]], pixel_bounds(p, q, r, samples), area2);
             }
         };
@@ -175,6 +175,7 @@ void bin_lines_points(Topology topology, std::span<const uint32_t> indices, cons
             for (size_t i = 0; i + 1 < window.size(); i += 2)
                 line_quad(window[i], window[i + 1], shape, flat.mask, window[i + (flat.first ? 0 : 1)], emit);
         }
+        bin.range = tiles.range();
     });
 }
 

@@ -3,6 +3,7 @@
 // not each other.
 #pragma once
 #include <algorithm>
+#include <climits>
 
 namespace softraster {
 
@@ -44,13 +45,17 @@ struct TileRange {
     bool contains(int tx, int ty) const { return tx >= x0 && tx < x1 && ty >= y0 && ty < y1; }
     // Index of tile (tx, ty) within the range, row by row; -1 outside it.
     int local(int tx, int ty) const { return contains(tx, ty) ? (ty - y0) * (x1 - x0) + (tx - x0) : -1; }
-    void include(int tx, int ty) {
-        if (count() == 0) {
-            *this = {tx, ty, tx + 1, ty + 1};
-            return;
-        }
-        x0 = std::min(x0, tx), y0 = std::min(y0, ty), x1 = std::max(x1, tx + 1), y1 = std::max(y1, ty + 1);
+};
+
+// The smallest TileRange holding rectangles of tiles given one at a time: binning widens it
+// once per triangle, so it starts inverted (holding nothing) and widens without a branch.
+struct TileBounds {
+    int x0 = INT_MAX, y0 = INT_MAX, x1 = INT_MIN, y1 = INT_MIN;
+    // Tiles [tx0, tx1] x [ty0, ty1], inclusive.
+    void include(int tx0, int ty0, int tx1, int ty1) {
+        x0 = std::min(x0, tx0), y0 = std::min(y0, ty0), x1 = std::max(x1, tx1 + 1), y1 = std::max(y1, ty1 + 1);
     }
+    TileRange range() const { return x0 < x1 && y0 < y1 ? TileRange{x0, y0, x1, y1} : TileRange{}; }
 };
 
 }  // namespace softraster

@@ -8,6 +8,7 @@
 // index into one or the other.
 #pragma once
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -30,14 +31,24 @@ inline int vertices_per_primitive(Topology t) {
 inline void validate_indices(std::span<const uint32_t> indices, size_t vertex_count, Topology t) {
     if (indices.size() % size_t(vertices_per_primitive(t)) != 0)
         throw std::invalid_argument("index count is not a multiple of the primitive size");
-    uint32_t largest = 0;  // (the largest first, a loop that vectorizes, then one test)
-    for (uint32_t i : indices) largest = std::max(largest, i);
-    if (!indices.empty() && largest >= vertex_count) throw std::out_of_range("index past the end of the vertex buffer");
+    if (vertex_count > UINT32_MAX) return;  // (every index is in range)
+    // A flag per index, ORed, then one test: a loop that vectorizes to a compare and an OR per
+    // vector (an unsigned maximum has no SSE2 instruction, and took three times as long).
+    const auto count = uint32_t(vertex_count);
+    uint32_t past_end = 0;
+    for (uint32_t i : indices) past_end |= uint32_t(i >= count);
+    if (past_end) throw std::out_of_range("index past the end of the vertex buffer");
 }
 
 // A corner flagged with kClippedVertex indexes the clipper's output, otherwise the
 // post-transform buffer.
 inline constexpr uint32_t kClippedVertex = 0x80000000u;
+
+// A triangle as primitive assembly passes it on and binning keeps it: its three corners
+// (corner_vertex).
+struct TriangleRef {
+    uint32_t v[3];
+};
 
 template <int N>
 const ShadedVertex<N>& corner_vertex(uint32_t i, const ShadedVertex<N>* post, const std::vector<ShadedVertex<N>>& clipped) {
@@ -52,9 +63,10 @@ struct FlatVaryings {
 };
 
 // Assembles the triangles of `indices` (three per triangle) in order and calls
-// emit(ia, ib, ic) with the corners of each that may be visible: as it is when it lies
-// inside every plane, else as the fan (0, k, k+1) of its clipped polygon, whose vertices are
-// appended to `clipped`. The clipper runs against `planes` (near, far, guard band). Every
+// emit(ref, a, b, c) with the corners of each that may be visible, as indices (`ref`,
+// corner_vertex) and as the vertices themselves: as it is when it lies inside every plane,
+// else as the fan (0, k, k+1) of its clipped polygon, whose vertices are appended to
+// `clipped`. The clipper runs against `planes` (near, far, guard band). Every
 // vertex of a clipped polygon carries the flat varyings of the triangle's provoking vertex,
 // so each triangle of its fan has them whichever corner provokes.
 template <int N, class Emit>
@@ -68,7 +80,7 @@ void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>
         if (a.outcode & b.outcode & c.outcode) continue;     // all outside one plane
         const unsigned mask = a.outcode | b.outcode | c.outcode;
         if (mask == 0) {
-            emit(ia, ib, ic);
+            emit(TriangleRef{{ia, ib, ic}}, a, b, c);
             continue;
         }
         const int n = clip_triangle(a.clip, b.clip, c.clip, planes, mask, poly);
@@ -87,8 +99,9 @@ void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>
             clipped.resize(first);
             continue;
         }
-        for (int k = 1; k + 1 < n; ++k)
-            emit(first | kClippedVertex, (first + uint32_t(k)) | kClippedVertex, (first + uint32_t(k) + 1) | kClippedVertex);
+        for (uint32_t k = 1; k + 1 < uint32_t(n); ++k)
+            emit(TriangleRef{{first | kClippedVertex, (first + k) | kClippedVertex, (first + k + 1) | kClippedVertex}}, clipped[first],
+                 clipped[first + k], clipped[first + k + 1]);
     }
 }
 
