@@ -93,6 +93,16 @@ inline double clipped_area(const std::array<double, 3>& px, const std::array<dou
 // touch and counts its area, at most its bounds within the tile.
 inline constexpr int kLargeTriangleTiles = 3;
 
+// Edge k of the triangle with corners (xs[i], ys[i]) in snapped window coordinates, from
+// corner k to the next, at point (px, py): E = (e.x)(P.y - k.y) - (e.y)(P.x - k.x), of the
+// sign of the triangle's signed area inside (E at the third corner is area2). T: int64_t for
+// corners anywhere in the guard band, int32_t where they are known to lie close together.
+template <class T>
+T edge_at(const T (&xs)[3], const T (&ys)[3], int k, T px, T py) {
+    const int n = k < 2 ? k + 1 : 0;
+    return (xs[n] - xs[k]) * (py - ys[k]) - (ys[n] - ys[k]) * (px - xs[k]);
+}
+
 // Appends a large triangle (add_to_tiles) to the tiles of `grid` in tiles [tx0, tx1] x
 // [ty0, ty1] that it may cover: a tile that one of its edges leaves wholly outside (the
 // tile's four corners strictly outside) holds none of its samples and is skipped. Each tile
@@ -100,14 +110,11 @@ inline constexpr int kLargeTriangleTiles = 3;
 template <int N, class V>
 [[gnu::noinline]] void add_large_to_tiles(TriangleBin<N>& bin, const TileGrid& grid, TriangleRef ref, const V& a, const V& b, const V& c,
                                           int tx0, int ty0, int tx1, int ty1, int64_t area2) {
-    // Edge k from corner k to the next: E(P) = (e.x)(P.y - k.y) - (e.y)(P.x - k.x), of area2's
-    // sign inside (E at the third corner is area2).
     const int64_t xs[3] = {a.X, b.X, c.X}, ys[3] = {a.Y, b.Y, c.Y};
     const int64_t sign = area2 < 0 ? -1 : 1;
     auto outside_one_edge = [&](int64_t x0, int64_t y0, int64_t x1, int64_t y1) {
         for (int k = 0; k < 3; ++k) {
-            const int64_t ex = xs[(k + 1) % 3] - xs[k], ey = ys[(k + 1) % 3] - ys[k];
-            auto out = [&](int64_t x, int64_t y) { return sign * (ex * (y - ys[k]) - ey * (x - xs[k])) < 0; };
+            auto out = [&](int64_t x, int64_t y) { return sign * edge_at(xs, ys, k, x, y) < 0; };
             if (out(x0, y0) && out(x1, y0) && out(x0, y1) && out(x1, y1)) return true;
         }
         return false;
@@ -203,15 +210,13 @@ void bin_pending(TriangleBin<N>& bin, size_t expected, Fill&& fill) {
 // inside its three edges or on one. Such a triangle (a third of those that reach a tile in
 // a mesh about as fine as the pixels) would cost its tile a setup and a walk over its bounds
 // for nothing. Its corners lie within three pixels of each other, so each edge function at
-// a center is a product of numbers below 2^11: exact in 32 bits, four centers at a time
-// without a branch. (A center on an edge counts as inside whatever the fill rule, so the
-// test drops nothing the rasterizer would draw.)
+// a center is a product of numbers below 2^11: exact in 32 bits, and the four centers of the
+// 2x2 block are tested without a branch. (A center on an edge counts as inside whatever the
+// fill rule, so the test drops nothing the rasterizer would draw.)
 template <class V>
 bool covers_no_center(const V& a, const V& b, const V& c, const Rect& r, const SampleExtent& s, int64_t area2) {
     if (s.x_lo != s.x_hi || s.y_lo != s.y_hi || r.x1 - r.x0 > 2 || r.y1 - r.y0 > 2) return false;
-    // Edge k from corner k to the next: E(P) = (e.x)(P.y - k.y) - (e.y)(P.x - k.x), of area2's
-    // sign inside (E at the third corner is area2), as in add_large_to_tiles; relative to the
-    // first center, (r.x0, r.y0)'s.
+    // The edges (edge_at) relative to the first center, (r.x0, r.y0)'s.
     const int32_t ox = r.x0 * int32_t(kSubpixelOne) + s.x_lo, oy = r.y0 * int32_t(kSubpixelOne) + s.y_lo;
     const int32_t xs[3] = {a.X - ox, b.X - ox, c.X - ox}, ys[3] = {a.Y - oy, b.Y - oy, c.Y - oy};
     const int32_t sign = area2 < 0 ? -1 : 1;
@@ -220,10 +225,7 @@ bool covers_no_center(const V& a, const V& b, const V& c, const Rect& r, const S
     for (int k = 0; k < 4; ++k) {
         const int32_t px = (k & 1) * int32_t(kSubpixelOne), py = (k >> 1) * int32_t(kSubpixelOne);
         int32_t in = ((k & 1) < r.x1 - r.x0) & ((k >> 1) < r.y1 - r.y0);
-        for (int e = 0; e < 3; ++e) {
-            const int n = (e + 1) % 3;
-            in &= sign * ((xs[n] - xs[e]) * (py - ys[e]) - (ys[n] - ys[e]) * (px - xs[e])) >= 0;
-        }
+        for (int e = 0; e < 3; ++e) in &= sign * edge_at(xs, ys, e, px, py) >= 0;
         inside[k] = in;
     }
     return (inside[0] | inside[1] | inside[2] | inside[3]) == 0;
