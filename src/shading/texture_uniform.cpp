@@ -20,7 +20,7 @@ namespace {
 struct LevelPoint {
     i8 index, fx, fy;
 };
-// The level's numbers are number(table): one level's for all lanes (level_point), or each
+// The level's numbers are number(table): one level's for all lanes (level_point_on), or each
 // lane's own (level_point_lanes).
 template <int Bits, class Number>
 inline void level_point_of(const PotLevels& t, const i8& fu, const i8& fv, const Number& number, LevelPoint& out) {
@@ -29,10 +29,6 @@ inline void level_point_of(const PotLevels& t, const i8& fu, const i8& fv, const
     const i8 x = (fu >> number(n.shift_u)) - kOne / 2, y = (fv >> number(n.shift_v)) - kOne / 2;
     const i8 i0 = (x >> Bits) & number(n.mask_w), j0 = (y >> Bits) & number(n.mask_h);
     out = {tile_index8(number(n.offset), number(n.tiles_x), i0, j0), x & (kOne - 1), y & (kOne - 1)};
-}
-template <bool Wide, int Bits>
-inline void level_point(const PotLevels& t, const i8& fu, const i8& fv, int k, LevelPoint& out) {
-    level_point_of<Bits>(t, fu, fv, [k](const std::array<int32_t, 16>& a) { return a[size_t(k)]; }, out);
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 // The level's numbers come as broadcasts from memory (LevelTables), and the shifts by them
@@ -66,7 +62,7 @@ inline void level_point_on(const PotLevels& t, const i8& fu, const i8& fv, int k
 #if SOFTRASTER_HAS_AVX2_PATH
     if constexpr (Wide) return level_point_avx2<Bits>(t, fu, fv, k, out);
 #endif
-    level_point<Wide, Bits>(t, fu, fv, k, out);
+    level_point_of<Bits>(t, fu, fv, [k](const std::array<int32_t, 16>& a) { return a[size_t(k)]; }, out);
 }
 // The same on lanes at two neighbouring levels, k where `up` is clear and k + 1 where set.
 // (For the few groups that straddle the line where the level of detail steps.)
