@@ -98,6 +98,7 @@ TEST(Stencil, EightLanesEqualOneAtATime) {
             EXPECT_EQ(stencil[l], stencil_one[l]) << "round " << round << " lane " << l;
             EXPECT_EQ(depth[l], depth_one[l]) << "round " << round << " lane " << l;
         }
+        for (int l = width; l < 8; ++l) EXPECT_EQ(stencil[l], stencil_one[l]) << "past the row's end, round " << round << " lane " << l;
         if (HasFailure()) return;
     }
 }

@@ -116,11 +116,19 @@ struct DepthStencilTest {
     DepthTest depth;
     bool stencil = false;
     StencilFace front, back;
+    // Whether a face's operations may change a stored value: not when all three keep it, or
+    // the write mask is 0 (then test_group stores nothing).
+    bool front_writes = false, back_writes = false;
+    static bool writes(const StencilFace& f) {
+        const bool keeps = f.fail == StencilOp::Keep && f.depth_fail == StencilOp::Keep && f.pass == StencilOp::Keep;
+        return f.write_mask != 0 && !keeps;
+    }
 
     DepthStencilTest() = default;
     explicit DepthStencilTest(const DepthTest& d) : depth(d) {}  // no stencil test
     explicit DepthStencilTest(const RenderState& st)
-        : depth(st), stencil(st.stencil_test), front(st.stencil_front), back(st.stencil_back) {}
+        : depth(st), stencil(st.stencil_test), front(st.stencil_front), back(st.stencil_back),
+          front_writes(writes(st.stencil_front)), back_writes(writes(st.stencil_back)) {}
 
     // The samples of one pixel in `covered` (of `samples`), at depths z[s]: tests, stencil
     // operations and depth writes in GL's order; returns the samples that pass both tests.
@@ -154,20 +162,19 @@ struct DepthStencilTest {
         using simd::i8;
         if (!stencil) return depth.test_group(depth_row, at, width, z, covered);  // (there may be no stencil buffer)
         const StencilFace& f = front_facing ? front : back;
-        const int n = width - at < simd::kLanes ? width - at : simd::kLanes;
-        i8 stored{};
-        for (int l = 0; l < n; ++l) stored[l] = stencil_row[at + l];
+        const i8 stored = simd::load_bytes(stencil_row, at, width);
         const i8 read = simd::splat_i(f.read_mask), ref = simd::splat_i(f.ref);
         const i8 stencil_pass = covered & depth_compare(f.func, ref & read, stored & read);
         // The depth test (and write) of the lanes that passed the stencil test.
         const i8 pass = depth.test_group(depth_row, at, width, z, stencil_pass);
+        if (!(front_facing ? front_writes : back_writes)) return pass;  // (every operation keeps the value, or none may write)
         // Each lane's operation: fail where the stencil test failed, depth fail, pass, or none.
         const i8 result = simd::select(covered & ~stencil_pass, stencil_op_result(f.fail, stored, ref),
                                        simd::select(stencil_pass & ~pass, stencil_op_result(f.depth_fail, stored, ref),
                                                     simd::select(pass, stencil_op_result(f.pass, stored, ref), stored)));
         const i8 write = simd::splat_i(f.write_mask);
         const i8 updated = (stored & ~write) | (result & write);
-        for (int l = 0; l < n; ++l) stencil_row[at + l] = uint8_t(updated[l]);
+        simd::store_bytes(stencil_row, at, width, updated);
         return pass;
     }
 };

@@ -200,6 +200,24 @@ inline void store_group(T* p, int x, int width, V v) {
 }
 
 // floor(255 clamp(x) + 0.5): the spec's 8-bit conversion, per lane.
+// Eight bytes of a row from p[x] on (of which p[x .. width) exist), each widened to a lane;
+// lanes past the end of the row read as zero. And back: each lane's low byte stored, except
+// past the end. (A stencil row: one 8-byte load and a widening, not eight inserts.)
+using u8x8 = uint8_t __attribute__((vector_size(kLanes)));
+inline i8 load_bytes(const uint8_t* p, int x, int width) {
+    u8x8 b{};
+    if (x + kLanes <= width) std::memcpy(&b, p + x, sizeof b);
+    else
+        for (int l = 0; l < width - x; ++l) b[l] = p[x + l];
+    return __builtin_convertvector(b, i8);
+}
+inline void store_bytes(uint8_t* p, int x, int width, i8 v) {
+    const u8x8 b = __builtin_convertvector(v & 255, u8x8);
+    if (x + kLanes <= width) std::memcpy(p + x, &b, sizeof b);
+    else
+        for (int l = 0; l < width - x; ++l) p[x + l] = b[l];
+}
+
 inline i8 quantize_unorm8(f8 x) { return to_int(clamp01(x) * 255.0f + 0.5f); }
 
 // Three lanes of f8: a vector per lane, stored by component.
