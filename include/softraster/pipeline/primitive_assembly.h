@@ -73,7 +73,13 @@ template <int N, class Emit>
 void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
                         const Viewport& vp, FlatVaryings flat, std::vector<ShadedVertex<N>>& clipped, Emit&& emit) {
     ClipPolygon<N> poly;
+    // A triangle's corners sit anywhere in the vertex buffer, and their loads wait behind the
+    // last triangle's branches: fetch two corners of the triangle eight places ahead into the
+    // cache (the other is mostly one a recent triangle read). The head of a vertex is what
+    // binning reads (its position and flags), unless the triangle is clipped.
+    constexpr size_t kAhead = 3 * 8;
     for (size_t i = 0; i + 2 < indices.size(); i += 3) {
+        if (i + kAhead + 2 < indices.size()) __builtin_prefetch(post + indices[i + kAhead + 1]), __builtin_prefetch(post + indices[i + kAhead + 2]);
         const uint32_t ia = indices[i], ib = indices[i + 1], ic = indices[i + 2];
         const ShadedVertex<N>&a = post[ia], &b = post[ib], &c = post[ic];
         if (!a.finite || !b.finite || !c.finite) continue;  // NaN or infinite position
