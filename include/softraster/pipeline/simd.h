@@ -1,6 +1,7 @@
 // Eight lanes of float or int, with GCC/Clang vector extensions: plain arithmetic on them
 // compiles to SIMD instructions (two SSE halves on a baseline x86-64 build, one AVX2
-// register where the compiler may use AVX2), with no intrinsics in the pipeline's code.
+// register where the compiler may use AVX2), with no intrinsics in the pipeline's code
+// (the few here are where GCC's code for the vector form is poor).
 // Used to shade a row of eight pixels at once (fragment_shading.h).
 #pragma once
 #include <atomic>
@@ -8,6 +9,9 @@
 #include <cstdlib>
 #include <cstdint>
 #include <cstring>
+#if defined(__x86_64__)
+#include <emmintrin.h>  // (SSE2, every x86-64 has it: load_bytes, store_bytes)
+#endif
 
 namespace softraster::simd {
 
@@ -202,21 +206,35 @@ inline void store_group(T* p, int x, int width, V v) {
 // floor(255 clamp(x) + 0.5): the spec's 8-bit conversion, per lane.
 // Eight bytes of a row from p[x] on (of which p[x .. width) exist), each widened to a lane;
 // lanes past the end of the row read as zero. And back: each lane's low byte stored, except
-// past the end. (A stencil row: one 8-byte load and a widening, not eight inserts.)
-using u8x8 = uint8_t __attribute__((vector_size(kLanes)));
+// past the end. (A stencil row: one 8-byte load or store and a few unpacks or packs, where
+// GCC makes eight inserts or extracts of the same conversion written for vectors.)
+#if defined(__x86_64__)
 inline i8 load_bytes(const uint8_t* p, int x, int width) {
-    u8x8 b{};
-    if (x + kLanes <= width) std::memcpy(&b, p + x, sizeof b);
-    else
-        for (int l = 0; l < width - x; ++l) b[l] = p[x + l];
-    return __builtin_convertvector(b, i8);
+    uint64_t word = 0;
+    if (x + kLanes <= width) std::memcpy(&word, p + x, sizeof word);
+    else std::memcpy(&word, p + x, size_t(width - x));  // (x86 is little-endian: the first bytes in the lowest lanes)
+    const __m128i zero = _mm_setzero_si128(), words = _mm_unpacklo_epi8(_mm_cvtsi64_si128(int64_t(word)), zero);  // (SSE2)
+    using i4 = int32_t __attribute__((vector_size(16)));
+    const i4 lo = i4(_mm_unpacklo_epi16(words, zero)), hi = i4(_mm_unpackhi_epi16(words, zero));
+    return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
 }
 inline void store_bytes(uint8_t* p, int x, int width, i8 v) {
-    const u8x8 b = __builtin_convertvector(v & 255, u8x8);
-    if (x + kLanes <= width) std::memcpy(p + x, &b, sizeof b);
-    else
-        for (int l = 0; l < width - x; ++l) p[x + l] = b[l];
+    const i8 low = v & 255;
+    const __m128i words = _mm_packs_epi32(__m128i(__builtin_shufflevector(low, low, 0, 1, 2, 3)), __m128i(__builtin_shufflevector(low, low, 4, 5, 6, 7)));
+    const auto word = uint64_t(_mm_cvtsi128_si64(_mm_packus_epi16(words, words)));
+    if (x + kLanes <= width) std::memcpy(p + x, &word, sizeof word);
+    else std::memcpy(p + x, &word, size_t(width - x));
 }
+#else
+inline i8 load_bytes(const uint8_t* p, int x, int width) {
+    i8 v{};
+    for (int l = 0; l < kLanes && l < width - x; ++l) v[l] = p[x + l];
+    return v;
+}
+inline void store_bytes(uint8_t* p, int x, int width, i8 v) {
+    for (int l = 0; l < kLanes && l < width - x; ++l) p[x + l] = uint8_t(v[l]);
+}
+#endif
 
 inline i8 quantize_unorm8(f8 x) { return to_int(clamp01(x) * 255.0f + 0.5f); }
 
