@@ -68,10 +68,9 @@ inline uint8_t encode(const Tables& t, float l) {
 }
 inline uint8_t encode(float l) { return encode(tables(), l); }
 
-// Eight lanes, each as encode() computes it, into `out`. (Vectors by reference: see
-// tone_mapping.h.)
-inline void encode(const simd::f8& linear, simd::i8& out) {
-    const Tables& t = tables();
+// Eight lanes, each as encode() computes it, into `out` (t: tables(), read once by the
+// caller for its groups). (Vectors by reference: see tone_mapping.h.)
+inline void encode(const Tables& t, const simd::f8& linear, simd::i8& out) {
     const simd::f8 l = simd::clamp01(linear);  // NaN -> 0; 1 lands in the last interval
     for (int lane = 0; lane < simd::kLanes; ++lane) {
         const uint32_t bits = std::bit_cast<uint32_t>(l[lane]);

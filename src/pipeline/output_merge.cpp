@@ -73,9 +73,11 @@ inline void merge_groups(const BlendSettings& settings, Framebuffer& fb, const G
         // Opaque: each group's pixels as the framebuffer stores them, the color space chosen
         // once per batch rather than per group.
         auto write = [&](ColorSpace space) {
+            const srgb::Tables& tables = srgb::tables();
             for (int g = 0; g < count; ++g) {
                 simd::i8 packed;
-                quantize_pack_rgba8<Wide>(p.rgba[g], space, packed);
+                if (space == ColorSpace::Linear) quantize_pack_rgba8<Wide>(p.rgba[g], packed);
+                else quantize_pack_srgb8<Wide>(tables, p.rgba[g], packed);
                 Rgba8* const row = color_row(p.y[g]);
                 simd::store_group(row, p.x[g], width, simd::select(pass[g], packed, simd::load_group<simd::i8>(row, p.x[g], width)));
             }

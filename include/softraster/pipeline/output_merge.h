@@ -246,21 +246,26 @@ template <>
     out = simd::i8(_mm256_shuffle_epi8(bytes, to_pixels));
 }
 #endif
-// The same as a framebuffer of that color space stores them (sRGB: r, g, b encoded).
+// The same as an sRGB framebuffer stores them (r, g, b encoded), with t = srgb::tables(),
+// which a caller packing many groups reads once.
 template <bool Wide = false>
-inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace space, simd::i8& out) {
-    if (space == ColorSpace::Linear) return quantize_pack_rgba8<Wide>(c, out);
+inline void quantize_pack_srgb8(const srgb::Tables& t, const std::array<simd::f8, 4>& c, simd::i8& out) {
     simd::i8 r, g, b;
 #if SOFTRASTER_HAS_AVX2_PATH
     if constexpr (Wide) {
-        const srgb::Tables& t = srgb::tables();
         srgb::encode_avx2(t, c[0], r), srgb::encode_avx2(t, c[1], g), srgb::encode_avx2(t, c[2], b);
     } else
 #endif
     {
-        srgb::encode(c[0], r), srgb::encode(c[1], g), srgb::encode(c[2], b);
+        srgb::encode(t, c[0], r), srgb::encode(t, c[1], g), srgb::encode(t, c[2], b);
     }
     out = r | (g << 8) | (b << 16) | (simd::quantize_unorm8(c[3]) << 24);
+}
+// The same as a framebuffer of that color space stores them.
+template <bool Wide = false>
+inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace space, simd::i8& out) {
+    if (space == ColorSpace::Linear) return quantize_pack_rgba8<Wide>(c, out);
+    quantize_pack_srgb8<Wide>(srgb::tables(), c, out);
 }
 
 // A source color of eight lanes in 8-bit: the channels blending reads (r, g, b, a), or for
