@@ -183,7 +183,9 @@ struct DepthCase {
 inline const std::array<DepthCase, 4> kDepthCases = {
     {{DepthFunc::Less, 1.0f}, {DepthFunc::LessEqual, 1.0f}, {DepthFunc::Greater, 0.0f}, {DepthFunc::Always, 1.0f}}};
 
-// Every sample's color and depth after drawing `meshes` in order (two threads, no culling).
+// Every sample's color and depth after drawing `meshes` in order (two threads, no culling;
+// with stencil_always, a stencil test that every fragment passes and that changes nothing,
+// which sends the draws to the general back end's command).
 struct SamplePicture {
     std::vector<Rgba8> color;
     std::vector<float> depth;
@@ -191,13 +193,14 @@ struct SamplePicture {
 };
 template <bool Pure>
 SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase depth, const std::vector<RgbMesh>& meshes,
-                              std::atomic<uint64_t>* batch_calls = nullptr) {
+                              std::atomic<uint64_t>* batch_calls = nullptr, bool stencil_always = false) {
     Framebuffer fb(width, height, samples);
     WorkerPool pool(2);
     Context ctx(fb, &pool);
     ctx.clear(glm::vec4(0, 0, 0, 1), depth.clear);
     ctx.state.cull = CullMode::None;
     ctx.state.depth_func = depth.func;
+    ctx.state.stencil_test = stencil_always;  // (the default faces: always pass, keep)
     for (const RgbMesh& m : meshes)
         ctx.draw(Topology::Triangles, RgbShader<Pure>{batch_calls}, std::span<const RgbVertex>(m.vertices), std::span<const uint32_t>(m.indices));
     ctx.execute();
@@ -212,7 +215,7 @@ SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase dept
 // function, such as Context::draw, from being compiled again where it is called.)
 extern template void draw<ConstantColorShader>(Context&, const ConstantColorShader&, const std::vector<ClipVertexIn>&,
                                                const std::vector<uint32_t>&, Topology);
-extern template SamplePicture draw_rgb_meshes<true>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*);
-extern template SamplePicture draw_rgb_meshes<false>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*);
+extern template SamplePicture draw_rgb_meshes<true>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*, bool);
+extern template SamplePicture draw_rgb_meshes<false>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*, bool);
 
 }  // namespace softraster::test

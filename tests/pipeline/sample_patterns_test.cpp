@@ -54,12 +54,14 @@ glm::dvec2 random_point(std::mt19937& rng) {
 
 ClipVertexIn vertex(glm::dvec2 p) { return {window_to_clip(float(p.x), float(p.y), W, H), 0}; }
 
-// A white triangle on black, drawn with n samples per pixel.
-Framebuffer white_triangle(int n, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+// A white triangle on black, drawn with n samples per pixel; with `stencil`, under a stencil
+// test every fragment passes, which sends the draw to the general back end's command.
+Framebuffer white_triangle(int n, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, bool stencil = false) {
     Framebuffer fb(W, H, n);
     Context ctx(fb);
     ctx.clear(glm::vec4(0, 0, 0, 1));
     ctx.state.cull = CullMode::None;
+    ctx.state.stencil_test = stencil;  // (the default faces: always pass, keep)
     draw(ctx, ConstantColorShader{glm::vec4(1)}, {vertex(a), vertex(b), vertex(c)}, {0, 1, 2});
     return fb;
 }
@@ -134,3 +136,32 @@ TEST_P(SamplePatterns, FlatSceneResolvesToCoverageFraction) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Counts, SamplePatterns, ::testing::Values(2, 4, 8, 16));
+
+// Triangles a few pixels across, as a mesh finer than the pixels has, at every sample count
+// and through either command (stencil off, or on and always passing): each sample covered
+// exactly when inside. Binning bounds a triangle by the framebuffer's own pattern and drops
+// a single-sampled one that covers no pixel center; a pattern narrower than the
+// framebuffer's would lose samples here.
+TEST(SamplePatternsAnyCount, TinyTrianglesCoveredExactlyWhenInside) {
+    std::mt19937 rng(77);
+    std::uniform_int_distribution<int> step(-3 * 256, 3 * 256), small_step(-64, 64);  // up to 3 pixels, or a quarter
+    for (const int n : {1, 2, 4, 8, 16})
+        for (const bool stencil : {false, true}) {
+            int covered_total = 0;
+            for (int trial = 0; trial < 400; ++trial) {
+                auto offset = [&] { return trial % 2 ? glm::dvec2(step(rng), step(rng)) / 256.0 : glm::dvec2(small_step(rng), small_step(rng)) / 256.0; };
+                const glm::dvec2 a = random_point(rng), b = a + offset(), c = a + offset();
+                const Framebuffer fb = white_triangle(n, a, b, c, stencil);
+                for (int y = 0; y < H; ++y)
+                    for (int x = 0; x < W; ++x)
+                        for (int s = 0; s < n; ++s) {
+                            const glm::dvec2 at = glm::dvec2(x, y) + (n == 1 ? glm::dvec2(0.5, 0.5) : d3d_position(n, s));
+                            const bool got = fb.color_data()[fb.sample_index(x, y, s)].r == 255;
+                            covered_total += got;
+                            ASSERT_EQ(got, inside(a, b, c, at)) << "samples " << n << (stencil ? " stencil" : "") << " trial " << trial << " pixel "
+                                                                << x << "," << y << " sample " << s;
+                        }
+            }
+            EXPECT_GT(covered_total, 20 * n) << "samples " << n;
+        }
+}

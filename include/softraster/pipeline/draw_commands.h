@@ -202,9 +202,9 @@ uint64_t draw_tile_general(const LayoutShader<L>& shader, const FragmentOps& ops
 }  // namespace phases
 
 // The front end of a draw, the same for both back ends: vertex processing and binning in
-// chunks (binned for the extent of BinSamples' sample pattern), then the draw's triangles
+// chunks (binned for the extent of the framebuffer's sample pattern), then the draw's triangles
 // per tile. Of lines or points (T), the triangles of their quads (line_point_quads.h).
-template <Shader S, int BinSamples, Topology T>
+template <Shader S, Topology T>
 class TriangleFrontEnd : public Command {
 public:
     static constexpr int N = kVaryingCount<typename S::Varyings>;
@@ -234,11 +234,15 @@ public:
         const size_t count = indices_.size() / kPer, begin = c * kTriangleChunk, end = std::min(count, begin + kTriangleChunk);
         const std::span<const uint32_t> chunk = indices_.subspan(begin * kPer, (end - begin) * kPer);
         const FlatVaryings flat{kFlatVaryings<S>, state_.provoking_vertex == ProvokingVertex::First};
+        // The framebuffer's own pattern bounds the pixels a triangle may cover, whichever
+        // back end draws it: a wider one would only hand the back end triangles that cover
+        // none of its samples.
+        const SampleExtent extent = sample_extent_of(target.fb->samples());
         if constexpr (T == Topology::Triangles) {
-            phases::bin_triangles(chunk, post_.data(), target, sample_extent<BinSamples>(), FaceState{state_.cull, state_.front_face}, flat, bin(c));
+            phases::bin_triangles(chunk, post_.data(), target, extent, FaceState{state_.cull, state_.front_face}, flat, bin(c));
         } else {
             const LinePointShape shape{state_.line_width, state_.point_size, target.fb->samples() > 1, state_.front_face};
-            bin_lines_points(T, chunk, post_.data(), target.planes, target.viewport, sample_extent<BinSamples>(), shape, flat, target.grid, bin(c));
+            bin_lines_points(T, chunk, post_.data(), target.planes, target.viewport, extent, shape, flat, target.grid, bin(c));
         }
     }
     void finish_binning(const TileGrid& grid) override { sum_bins<N>(bins(), grid); }
@@ -263,8 +267,8 @@ protected:
 };
 
 template <Shader S, int Samples, Topology T = Topology::Triangles>
-class TriangleCommand final : public TriangleFrontEnd<S, Samples, T> {
-    using Base = TriangleFrontEnd<S, Samples, T>;
+class TriangleCommand final : public TriangleFrontEnd<S, T> {
+    using Base = TriangleFrontEnd<S, T>;
     using Base::shader_, Base::state_, Base::triangles;
     using L = LayoutOf<S>;
 
@@ -310,11 +314,10 @@ private:
 // A triangle draw in the general back end (general_back_end.h): the same front end, then
 // one fragment at a time with every per-fragment operation. Compiled once per varying layout.
 template <Shader S, Topology T = Topology::Triangles>
-class GeneralTriangleCommand final : public TriangleFrontEnd<S, kMaxSamples, T> {
-    // Binned by the 16-sample pattern's extent, which holds every pattern's (sample_pattern.h):
-    // a tile may get a triangle that covers none of its samples (rasterization finds none),
-    // never miss one; and one command type serves every sample count.
-    using Base = TriangleFrontEnd<S, kMaxSamples, T>;
+class GeneralTriangleCommand final : public TriangleFrontEnd<S, T> {
+    // One command type serves every sample count: the back end takes the count as a value,
+    // and binning the pattern's extent (TriangleFrontEnd::bin_primitive_chunk).
+    using Base = TriangleFrontEnd<S, T>;
     using Base::shader_, Base::state_, Base::triangles;
     using L = LayoutOf<S>;
 
