@@ -1,6 +1,7 @@
 // Tests of the eight-lane helpers the per-pixel code is built on (pipeline/simd.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -49,6 +50,24 @@ TEST(Simd, LoadAndStoreStopAtTheEndOfTheRow) {
     for (int l = 0; l < kLanes; ++l) EXPECT_EQ(v[l], l < 3 ? float(8 + l) : 0.0f);
     store_group(row.data(), 8, width, splat(-1.0f));
     for (size_t i = 0; i < row.size(); ++i) EXPECT_EQ(row[i], i >= 8 && i < 11 ? -1.0f : float(i));
+}
+
+// Bytes (a stencil row) widened into lanes and narrowed back, each lane's low byte only, for
+// every number of bytes left in the row.
+TEST(Simd, BytesWidenAndNarrowStoppingAtTheEndOfTheRow) {
+    for (int left = 1; left <= 9; ++left) {
+        std::array<uint8_t, 24> row{};
+        for (size_t i = 0; i < row.size(); ++i) row[i] = uint8_t(250 - 13 * i);  // (high bits set in some)
+        const int x = 8, width = x + left;
+        const i8 v = load_bytes(row.data(), x, width);
+        for (int l = 0; l < kLanes; ++l) EXPECT_EQ(v[l], l < left ? int(row[size_t(x + l)]) : 0) << left << " left, lane " << l;
+        const std::array<uint8_t, 24> before = row;
+        store_bytes(row.data(), x, width, kLaneIndex * 0x101 + 0x7f00 + 3);  // low bytes 3..10, the rest dropped
+        for (size_t i = 0; i < row.size(); ++i) {
+            const bool written = int(i) >= x && int(i) < std::min(width, x + kLanes);
+            EXPECT_EQ(row[i], written ? uint8_t(int(i) - x + 3) : before[i]) << left << " left, byte " << i;
+        }
+    }
 }
 
 }  // namespace

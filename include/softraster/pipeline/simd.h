@@ -203,7 +203,6 @@ inline void store_group(T* p, int x, int width, V v) {
     }
 }
 
-// floor(255 clamp(x) + 0.5): the spec's 8-bit conversion, per lane.
 // Eight bytes of a row from p[x] on (of which p[x .. width) exist), each widened to a lane;
 // lanes past the end of the row read as zero. And back: each lane's low byte stored, except
 // past the end. (A stencil row: one 8-byte load or store and a few unpacks or packs, where
@@ -236,6 +235,7 @@ inline void store_bytes(uint8_t* p, int x, int width, i8 v) {
 }
 #endif
 
+// floor(255 clamp(x) + 0.5): the spec's 8-bit conversion, per lane.
 inline i8 quantize_unorm8(f8 x) { return to_int(clamp01(x) * 255.0f + 0.5f); }
 
 // Three lanes of f8: a vector per lane, stored by component.
