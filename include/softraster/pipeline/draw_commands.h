@@ -237,7 +237,7 @@ public:
         // The framebuffer's own pattern bounds the pixels a triangle may cover, whichever
         // back end draws it: a wider one would only hand the back end triangles that cover
         // none of its samples.
-        const SampleExtent extent = sample_extent_of(target.fb->samples());
+        const SampleExtent extent = with_sample_count(target.fb->samples(), []<int Samples>() { return sample_extent<Samples>(); });
         if constexpr (T == Topology::Triangles) {
             phases::bin_triangles(chunk, post_.data(), target, extent, FaceState{state_.cull, state_.front_face}, flat, bin(c));
         } else {

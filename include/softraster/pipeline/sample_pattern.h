@@ -49,18 +49,6 @@ constexpr SampleExtent sample_extent() {
             *std::min_element(P::y.begin(), P::y.end()), *std::max_element(P::y.begin(), P::y.end())};
 }
 
-// The same for a sample count known at run time (1, 2, 4, 8 or 16; any other count gets the
-// 16-sample pattern's extent, which holds every other's).
-inline SampleExtent sample_extent_of(int samples) {
-    switch (samples) {
-        case 1: return sample_extent<1>();
-        case 2: return sample_extent<2>();
-        case 4: return sample_extent<4>();
-        case 8: return sample_extent<8>();
-        default: return sample_extent<16>();
-    }
-}
-
 // Pixels with a sample inside the bounding box [m, M] of a snapped triangle (corners with
 // 24.8 fixed-point X, Y): pixel i has its samples at 256 i + s with s in [lo, hi], so one
 // may be inside only if 256 i + hi >= m and 256 i + lo <= M, i.e.
