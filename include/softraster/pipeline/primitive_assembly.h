@@ -8,7 +8,6 @@
 // index into one or the other.
 #pragma once
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <span>
