@@ -102,13 +102,13 @@ void expect_planes_of_the_corner_values(bool noperspective) {
         const double wa = noperspective ? 1.0 : a.window.inv_w, wb = noperspective ? 1.0 : b.window.inv_w,
                      wc = noperspective ? 1.0 : c.window.inv_w;
         for (size_t i = 0; i < size_t(N); ++i)
-            expect_plane(t.var_w[i], a.clip.var[i] * wa, b.clip.var[i] * wb, c.clip.var[i] * wc, "varying ", i);
+            expect_plane(t.var_w(i), a.clip.var[i] * wa, b.clip.var[i] * wb, c.clip.var[i] * wc, "varying ", i);
         if (noperspective) {
-            EXPECT_EQ(t.inv_w.a0, 1.0f);
-            EXPECT_EQ(t.inv_w.dadx, 0.0f);
-            EXPECT_EQ(t.inv_w.dady, 0.0f);
+            EXPECT_EQ(t.inv_w().a0, 1.0f);
+            EXPECT_EQ(t.inv_w().dadx, 0.0f);
+            EXPECT_EQ(t.inv_w().dady, 0.0f);
         } else {
-            expect_plane(t.inv_w, wa, wb, wc, "1/w", 0);
+            expect_plane(t.inv_w(), wa, wb, wc, "1/w", 0);
         }
         ++checked;
     }

@@ -29,14 +29,14 @@ inline std::array<T, N> interpolate_perspective(const TriangleSetup<N>& t, T i, 
     std::array<T, N> out;
     if constexpr (Constant) {
         if (t.constant_varyings) {
-            for (size_t k = 0; k < size_t(N); ++k) out[k] = t.var_w[k].at(i, j);  // a0 + 0 i + 0 j: exactly a0
+            for (size_t k = 0; k < size_t(N); ++k) out[k] = t.var_w(k).at(i, j);  // a0 + 0 i + 0 j: exactly a0
             return out;
         }
     }
-    const T w = 1.0f / t.inv_w.at(i, j);
+    const T w = 1.0f / t.inv_w().at(i, j);
     for (size_t k = 0; k < size_t(N); ++k) {
-        if ((Flat >> k) & 1) out[k] = t.var_w[k].at(i, j);  // a0 + 0 i + 0 j: exactly a0
-        else out[k] = t.var_w[k].at(i, j) * w;
+        if ((Flat >> k) & 1) out[k] = t.var_w(k).at(i, j);  // a0 + 0 i + 0 j: exactly a0
+        else out[k] = t.var_w(k).at(i, j) * w;
     }
     return out;
 }
@@ -69,19 +69,19 @@ inline std::array<simd::f8, N> interpolate_quad_rows(const TriangleSetup<N>& t, 
     constexpr size_t a = size_t(S::kDerivativeOf), at = size_t(S::kDerivativeAt);
     std::array<f8, N> out;
     static_assert(((Flat >> a) & 3) == 0, "the varying with derivatives is interpolated");
-    const f8 w = 1.0f / t.inv_w.at(i, j);  // (interpolate_perspective)
+    const f8 w = 1.0f / t.inv_w().at(i, j);  // (interpolate_perspective)
     for (size_t k = 0; k < size_t(N); ++k) {
         if (k >= at && k < at + 4) continue;  // (the derivatives, below)
-        if ((Flat >> k) & 1) out[k] = t.var_w[k].at(i, j);
-        else out[k] = t.var_w[k].at(i, j) * w;
+        if ((Flat >> k) & 1) out[k] = t.var_w(k).at(i, j);
+        else out[k] = t.var_w(k).at(i, j) * w;
     }
     const bool top = ((t.origin_y + int(j[0])) & 1) == 0;  // this row is the quads' first (y0)
     const f8 j_other = top ? j + 1.0f : j - 1.0f;
-    const f8 w_other = 1.0f / t.inv_w.at(i, j_other);
+    const f8 w_other = 1.0f / t.inv_w().at(i, j_other);
     auto even = [](const f8& v) { return __builtin_shufflevector(v, v, 0, 0, 2, 2, 4, 4, 6, 6); };
     auto odd = [](const f8& v) { return __builtin_shufflevector(v, v, 1, 1, 3, 3, 5, 5, 7, 7); };
     for (size_t c = 0; c < 2; ++c) {
-        const f8 here = out[a + c], there = t.var_w[a + c].at(i, j_other) * w_other;
+        const f8 here = out[a + c], there = t.var_w(a + c).at(i, j_other) * w_other;
         const f8 row0 = top ? here : there, row1 = top ? there : here;  // a at rows y0 and y0 + 1
         const f8 v00 = even(row0);
         out[at + c] = odd(row0) - v00;
@@ -101,14 +101,14 @@ inline void interpolate_quad_row_pair(const TriangleSetup<N>& t, const simd::f8&
     constexpr size_t a = size_t(S::kDerivativeOf), at = size_t(S::kDerivativeAt);
     static_assert(((Flat >> a) & 3) == 0, "the varying with derivatives is interpolated");
     const f8 j1 = j0 + 1.0f;
-    const f8 w0 = 1.0f / t.inv_w.at(i, j0), w1 = 1.0f / t.inv_w.at(i, j1);
+    const f8 w0 = 1.0f / t.inv_w().at(i, j0), w1 = 1.0f / t.inv_w().at(i, j1);
     // Built in locals and stored at the end: stores through first and second (floats) could
     // alias the planes, which would then be loaded again after each.
     std::array<f8, size_t(N)> top, bottom;
     for (size_t k = 0; k < size_t(N); ++k) {
         if (k >= at && k < at + 4) continue;  // (the derivatives, below)
-        if ((Flat >> k) & 1) top[k] = t.var_w[k].at(i, j0), bottom[k] = t.var_w[k].at(i, j1);
-        else top[k] = t.var_w[k].at(i, j0) * w0, bottom[k] = t.var_w[k].at(i, j1) * w1;
+        if ((Flat >> k) & 1) top[k] = t.var_w(k).at(i, j0), bottom[k] = t.var_w(k).at(i, j1);
+        else top[k] = t.var_w(k).at(i, j0) * w0, bottom[k] = t.var_w(k).at(i, j1) * w1;
     }
     for (size_t c = 0; c < 2; ++c) {
         const f8 row0 = top[a + c], row1 = bottom[a + c];  // (a is not flat: the same values as p.at * w)
@@ -131,9 +131,9 @@ inline std::array<T, N> interpolate_varyings(const TriangleSetup<N>& t, T i, T j
         if constexpr (Constant)
             if (t.constant_varyings) return out;  // (they stay 0)
         const T i0 = i - odd(t.origin_x, i), j0 = j - odd(t.origin_y, j), i1 = i0 + 1.0f, j1 = j0 + 1.0f;
-        const T w00 = 1.0f / t.inv_w.at(i0, j0), w10 = 1.0f / t.inv_w.at(i1, j0), w01 = 1.0f / t.inv_w.at(i0, j1);
+        const T w00 = 1.0f / t.inv_w().at(i0, j0), w10 = 1.0f / t.inv_w().at(i1, j0), w01 = 1.0f / t.inv_w().at(i0, j1);
         for (size_t c = 0; c < 2; ++c) {
-            const Plane& p = t.var_w[a + c];
+            const Plane p = t.var_w(a + c);
             const T v00 = p.at(i0, j0) * w00;
             out[at + c] = p.at(i1, j0) * w10 - v00;
             out[at + 2 + c] = p.at(i0, j1) * w01 - v00;

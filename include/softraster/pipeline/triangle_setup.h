@@ -87,6 +87,18 @@ struct TriangleEdges {
     }
 };
 
+// A triangle's interpolation planes, a lane per plane, as setup_planes makes them four at a
+// time: lane k < N the varying k over w, lane N 1/w, the rest padding. Stored as the vectors
+// come out of the double-precision arithmetic (each plane's value, then its gradients), they
+// need no transpose into one (a0, dadx, dady) record per plane.
+template <int N>
+struct PlaneLanes {
+    static constexpr int kVectors = (N + 1 + 3) / 4;  // four planes a vector
+    alignas(16) std::array<float, size_t(4 * kVectors)> a0{}, dadx{}, dady{};
+    Plane operator[](size_t k) const { return {a0[k], dadx[k], dady[k]}; }
+    void set(size_t k, const Plane& p) { a0[k] = p.a0, dadx[k] = p.dadx, dady[k] = p.dady; }
+};
+
 template <int N>
 struct TriangleSetup : TriangleEdges {
     std::array<const ShadedVertex<N>*, 3> corner{};  // clockwise on screen
@@ -94,14 +106,15 @@ struct TriangleSetup : TriangleEdges {
     // Interpolation planes, made by setup_planes. A draw may make them only once the triangle
     // is known to cover a sample: in a million-triangle mesh many triangles cover none.
     bool has_planes = false;
-    // Every varying has the same value at the three corners (or is flat): then var_w holds
+    // Every varying has the same value at the three corners (or is flat): then its plane holds
     // the values themselves as constant planes, and interpolation returns them exactly.
     // Only draws that set up planes with Constant (setup_planes) look; for the others it
     // stays false. (Beside has_planes, in its padding: the struct keeps its size.)
     bool constant_varyings = false;
-    PlaneOptions options;        // set per draw, before setup_coverage
-    Plane inv_w;                 // 1/w
-    std::array<Plane, N> var_w;  // varying / w
+    PlaneOptions options;  // set per draw, before setup_coverage
+    PlaneLanes<N> planes;
+    Plane var_w(size_t k) const { return planes[k]; }  // varying k / w
+    Plane inv_w() const { return planes[size_t(N)]; }  // 1/w
 };
 
 // Sets up the coverage of triangle (v0, v1, v2), already culled and known to have non-zero
@@ -199,7 +212,7 @@ namespace plane_lanes {
 using d4 = double __attribute__((vector_size(32)));
 using f4 = float __attribute__((vector_size(16)));
 template <int N>
-inline constexpr int kVectors = (N + 1 + 3) / 4;
+inline constexpr int kVectors = PlaneLanes<N>::kVectors;
 
 // Lane I's value at corner v before the division by w, as a float: a varying or 1.
 template <int N, int I>
@@ -250,8 +263,8 @@ void setup_planes(TriangleSetup<N>& t) {
     if (Constant && t.options.find_constant) {
         t.constant_varyings = constant_varyings<Flat>(v0, v1, v2);
         if (t.constant_varyings) {
-            t.inv_w = Plane{1.0f, 0.0f, 0.0f};
-            for (size_t k = 0; k < size_t(N); ++k) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
+            t.planes.set(size_t(N), Plane{1.0f, 0.0f, 0.0f});
+            for (size_t k = 0; k < size_t(N); ++k) t.planes.set(k, Plane{t.provoking->clip.var[k], 0.0f, 0.0f});
             t.has_planes = true;
             return;
         }
@@ -264,24 +277,14 @@ void setup_planes(TriangleSetup<N>& t) {
             const d4 a0 = corner<N, Q>(v0, w(v0)), a1 = corner<N, Q>(v1, w(v1)), a2 = corner<N, Q>(v2, w(v2));
             const auto [value, dadx, dady] = basis.at_origin(a0, a1, a2);
             const f4 a = __builtin_convertvector(value, f4), x = __builtin_convertvector(dadx, f4), y = __builtin_convertvector(dady, f4);
-            if constexpr (4 * Q + 4 <= N) {  // four varyings' planes in a row, (a, x, y) each: a 4x3 transpose
-                const f4 lo = __builtin_shufflevector(a, x, 0, 4, 1, 5), hi = __builtin_shufflevector(a, x, 2, 6, 3, 7);
-                const f4 rows[3] = {__builtin_shufflevector(lo, y, 0, 1, 4, 2),
-                                    __builtin_shufflevector(__builtin_shufflevector(lo, y, 3, 5, 3, 5), hi, 0, 1, 4, 5),
-                                    __builtin_shufflevector(y, hi, 2, 6, 7, 3)};
-                static_assert(sizeof(Plane) == 3 * sizeof(float));
-                std::memcpy(&t.var_w[size_t(4 * Q)], rows, sizeof rows);
-            } else {
-                for (int l = 0; l < 4; ++l) {
-                    const int i = 4 * Q + l;
-                    if (i < N) t.var_w[size_t(i)] = Plane{a[l], x[l], y[l]};
-                    else if (i == N) t.inv_w = perspective ? Plane{a[l], x[l], y[l]} : Plane{1.0f, 0.0f, 0.0f};
-                }
-            }
+            std::memcpy(&t.planes.a0[size_t(4 * Q)], &a, sizeof a);
+            std::memcpy(&t.planes.dadx[size_t(4 * Q)], &x, sizeof x);
+            std::memcpy(&t.planes.dady[size_t(4 * Q)], &y, sizeof y);
         }(), ...);
     }(std::make_integer_sequence<int, kVectors<N>>());
+    if (!perspective) t.planes.set(size_t(N), Plane{1.0f, 0.0f, 0.0f});
     for (size_t k = 0; k < size_t(N); ++k)
-        if ((Flat >> k) & 1) t.var_w[k] = Plane{t.provoking->clip.var[k], 0.0f, 0.0f};
+        if ((Flat >> k) & 1) t.planes.set(k, Plane{t.provoking->clip.var[k], 0.0f, 0.0f});
     t.has_planes = true;
 }
 
