@@ -220,15 +220,21 @@ bool covers_no_center(const V& a, const V& b, const V& c, const Rect& r, const S
     const int32_t ox = r.x0 * int32_t(kSubpixelOne) + s.x_lo, oy = r.y0 * int32_t(kSubpixelOne) + s.y_lo;
     const int32_t xs[3] = {a.X - ox, b.X - ox, c.X - ox}, ys[3] = {a.Y - oy, b.Y - oy, c.Y - oy};
     const int32_t sign = area2 < 0 ? -1 : 1;
-    // center k of the 2x2 block at (k & 1, k >> 1) pixels from the first; those past the bounds stay out
-    int32_t inside[4];
-    for (int k = 0; k < 4; ++k) {
-        const int32_t px = (k & 1) * int32_t(kSubpixelOne), py = (k >> 1) * int32_t(kSubpixelOne);
-        int32_t in = ((k & 1) < r.x1 - r.x0) & ((k >> 1) < r.y1 - r.y0);
-        for (int e = 0; e < 3; ++e) in &= sign * edge_at(xs, ys, e, px, py) >= 0;
-        inside[k] = in;
+    // Center k of the 2x2 block lies (k & 1, k >> 1) pixels from the first. Edge e's value
+    // there (edge_at, times the sign) is its value at the first center plus a pixel's step
+    // right, -dy, and down, +dx, each times 256: the four values of an edge are its first and
+    // three sums, and a center is outside where the OR of its three edges' values is negative.
+    int32_t outside[4] = {0, 0, 0, 0};
+    for (int e = 0; e < 3; ++e) {
+        const int n = e < 2 ? e + 1 : 0;
+        const int32_t dx = sign * (xs[n] - xs[e]), dy = sign * (ys[n] - ys[e]);
+        const int32_t first = dy * xs[e] - dx * ys[e];  // (edge_at at (0, 0))
+        const int32_t right = -dy * int32_t(kSubpixelOne), down = dx * int32_t(kSubpixelOne);
+        outside[0] |= first, outside[1] |= first + right, outside[2] |= first + down, outside[3] |= first + right + down;
     }
-    return (inside[0] | inside[1] | inside[2] | inside[3]) == 0;
+    // (A center past the bounds needs no mask: it lies beyond the corners' box, so outside
+    // an edge of a triangle that has an area, which binning's triangles have.)
+    return (outside[0] & outside[1] & outside[2] & outside[3]) < 0;
 }
 
 // The front end's triangle half for one chunk of a draw, stage by stage: primitive assembly
