@@ -282,6 +282,8 @@ void setup_planes(TriangleSetup<N>& t) {
             std::memcpy(&t.planes.dady[size_t(4 * Q)], &y, sizeof y);
         }(), ...);
     }(std::make_integer_sequence<int, kVectors<N>>());
+    // (noperspective: 1/w's lane, made from 1 at every corner, set to exactly 1 everywhere,
+    // whatever a sliver's huge 1 / det made of its gradients)
     if (!perspective) t.planes.set(size_t(N), Plane{1.0f, 0.0f, 0.0f});
     for (size_t k = 0; k < size_t(N); ++k)
         if ((Flat >> k) & 1) t.planes.set(k, Plane{t.provoking->clip.var[k], 0.0f, 0.0f});
