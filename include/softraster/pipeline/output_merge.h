@@ -268,11 +268,12 @@ inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace spa
     quantize_pack_srgb8<Wide>(srgb::tables(), c, out);
 }
 
-// A source color of eight lanes in 8-bit: the channels blending reads (r, g, b, a), or for
-// an opaque write the pixel as the framebuffer stores it (packed). Quantized apart from the
-// merge, so that a color the same for a whole triangle is quantized once, not per group.
+// A source color of eight lanes in 8-bit: what blending reads of it (its channels times its
+// alpha, mul_unorm8, its alpha and 1 - alpha), or for an opaque write the pixel as the
+// framebuffer stores it (packed). Worked out apart from the merge, so that a color the same
+// for a whole triangle is worked out once, not per group.
 struct SourceUnorm8 {
-    simd::i8 r, g, b, a, packed;
+    simd::i8 ra, ga, ba, a, inv_a, packed;
 };
 template <bool Blended>
 inline SourceUnorm8 quantize_source(const BlendSettings& settings, const std::array<simd::f8, 4>& c) {
@@ -280,8 +281,10 @@ inline SourceUnorm8 quantize_source(const BlendSettings& settings, const std::ar
     if (!Blended || settings.mode == BlendMode::Opaque) {
         quantize_pack_rgba8(c, settings.color_space, q.packed);
     } else {
-        q.r = simd::quantize_unorm8(c[0]), q.g = simd::quantize_unorm8(c[1]), q.b = simd::quantize_unorm8(c[2]);
         q.a = simd::quantize_unorm8(c[3]);
+        q.inv_a = 255 - q.a;
+        q.ra = mul_unorm8(simd::quantize_unorm8(c[0]), q.a), q.ga = mul_unorm8(simd::quantize_unorm8(c[1]), q.a);
+        q.ba = mul_unorm8(simd::quantize_unorm8(c[2]), q.a);
     }
     return q;
 }
@@ -301,15 +304,14 @@ inline void blend_group(const BlendSettings& settings, Rgba8* row, int x, int wi
     const i8 dr = old & 255, dg = (old >> 8) & 255, db = (old >> 16) & 255, da = (old >> 24) & 255;
     i8 r, g, b, a;
     if (mode == BlendMode::Alpha) {
-        const i8 inv = 255 - s.a;
-        r = mul_unorm8(s.r, s.a) + mul_unorm8(dr, inv);
-        g = mul_unorm8(s.g, s.a) + mul_unorm8(dg, inv);
-        b = mul_unorm8(s.b, s.a) + mul_unorm8(db, inv);
-        a = s.a + mul_unorm8(da, inv);
+        r = s.ra + mul_unorm8(dr, s.inv_a);
+        g = s.ga + mul_unorm8(dg, s.inv_a);
+        b = s.ba + mul_unorm8(db, s.inv_a);
+        a = s.a + mul_unorm8(da, s.inv_a);
     } else {
-        r = mul_unorm8(s.r, s.a) + dr;
-        g = mul_unorm8(s.g, s.a) + dg;
-        b = mul_unorm8(s.b, s.a) + db;
+        r = s.ra + dr;
+        g = s.ga + dg;
+        b = s.ba + db;
         a = da;
     }
     const i8 max = simd::splat_i(255);
