@@ -211,8 +211,6 @@ void setup_depth_plane(TriangleSetup<N>& t, const PlaneBasis& basis) {
 namespace plane_lanes {
 using d4 = double __attribute__((vector_size(32)));
 using f4 = float __attribute__((vector_size(16)));
-template <int N>
-inline constexpr int kVectors = PlaneLanes<N>::kVectors;
 
 // Lane I's value at corner v before the division by w, as a float: a varying or 1.
 template <int N, int I>
@@ -281,7 +279,7 @@ void setup_planes(TriangleSetup<N>& t) {
             std::memcpy(&t.planes.dadx[size_t(4 * Q)], &x, sizeof x);
             std::memcpy(&t.planes.dady[size_t(4 * Q)], &y, sizeof y);
         }(), ...);
-    }(std::make_integer_sequence<int, kVectors<N>>());
+    }(std::make_integer_sequence<int, PlaneLanes<N>::kVectors>());
     // (noperspective: 1/w's lane, made from 1 at every corner, set to exactly 1 everywhere,
     // whatever a sliver's huge 1 / det made of its gradients)
     if (!perspective) t.planes.set(size_t(N), Plane{1.0f, 0.0f, 0.0f});
