@@ -60,19 +60,16 @@ void Context::execute() {
         if (c->uses_stencil()) fb_->add_stencil();
     }
 
-    // The front end. A small draw (one chunk of vertices, one of primitives) is one item:
-    // its primitives are binned right after its vertices are processed, while they are still
-    // in this core's cache; with many small draws, processing all vertices first would have
-    // evicted them. Bigger draws go in two phases, every chunk of a phase in parallel.
-    auto is_small = [](const Command& c) { return c.vertex_chunks() <= 1 && c.primitive_chunks() <= 1; };
-    const auto vertex_items = work_items(commands_, [&](const Command& c) { return is_small(c) ? size_t(1) : c.vertex_chunks(); });
+    // The front end. A small draw is one item (Command::process_small): with many small
+    // draws, processing all vertices first would have evicted them from the cache before
+    // binning. Bigger draws go in two phases, every chunk of a phase in parallel.
+    const auto vertex_items = work_items(commands_, [&](const Command& c) { return c.small() ? size_t(1) : c.vertex_chunks(); });
     for_each_item(pool_, vertex_items.size(), [&](size_t i, unsigned) {
         Command& c = *vertex_items[i].first;
-        if (!is_small(c)) return c.process_vertex_chunk(vertex_items[i].second, target);
-        if (c.vertex_chunks() == 1) c.process_vertex_chunk(0, target);
-        if (c.primitive_chunks() == 1) c.bin_primitive_chunk(0, target);
+        if (!c.small()) return c.process_vertex_chunk(vertex_items[i].second, target);
+        c.process_small(target);
     });
-    const auto bin_items = work_items(commands_, [&](const Command& c) { return is_small(c) ? size_t(0) : c.primitive_chunks(); });
+    const auto bin_items = work_items(commands_, [&](const Command& c) { return c.small() ? size_t(0) : c.primitive_chunks(); });
     for_each_item(pool_, bin_items.size(), [&](size_t i, unsigned) { bin_items[i].first->bin_primitive_chunk(bin_items[i].second, target); });
     for (auto& c : commands_) c->finish_binning(target.grid);
     list_commands_by_tile(target.grid);

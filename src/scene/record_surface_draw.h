@@ -60,14 +60,14 @@ SOFTRASTER_SURFACE_MODELS(SOFTRASTER_DECLARE_SURFACE_DRAW)
 // where it is used.
 #define SOFTRASTER_SURFACE_VARYING_COUNTS(X) X(1) X(3) X(4) X(6) X(7) X(9) X(10) X(12) X(13) X(16) X(20)
 #define SOFTRASTER_BIN_PHASE(N)                                                                                           \
-    void phases::bin_triangles<N>(std::span<const uint32_t>, const ShadedVertex<N>*, const DrawTarget&, const SampleExtent&, \
-                                  FaceState, FlatVaryings, TriangleBin<N>&)
+    void phases::bin_triangles<N>(std::span<const uint32_t>, const ShadedVertex<N>*, const ClipInfo*, const DrawTarget&,       \
+                                  const SampleExtent&, FaceState, FlatVaryings, TriangleBin<N>&)
 #define SOFTRASTER_VISIBILITY_PHASE(S, N)                                                                               \
     void phases::visibility_pass<S, N>(const BinnedTriangles<N>&, const RenderState&, Framebuffer&, int, int, const Rect&, \
                                        uint32_t, uint32_t*)
 #define SOFTRASTER_SURFACE_PHASES(N, WHICH)                                                              \
-    WHICH template void finish_vertices8_wide<N>(ShadedVertex<N>*, const ClipPlanes&, const Viewport&);    \
-    WHICH template void finish_vertices8_generic<N>(ShadedVertex<N>*, const ClipPlanes&, const Viewport&); \
+    WHICH template void finish_vertices8_wide<N>(ShadedVertex<N>*, ClipInfo*, const ClipPlanes&, const Viewport&);    \
+    WHICH template void finish_vertices8_generic<N>(ShadedVertex<N>*, ClipInfo*, const ClipPlanes&, const Viewport&); \
     WHICH template SOFTRASTER_BIN_PHASE(N);                                                              \
     WHICH template SOFTRASTER_VISIBILITY_PHASE(1, N);                                                    \
     WHICH template SOFTRASTER_VISIBILITY_PHASE(4, N);

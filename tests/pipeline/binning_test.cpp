@@ -19,6 +19,14 @@ namespace {
 
 constexpr int W = 256, H = 256;  // the viewport random_triangle maps to: 4 x 4 tiles
 
+// The clip parts of n vertices v inside every clip plane and finite (as finish_vertex made
+// them, which the tests' vertices come from): binning reads their flags and snapped positions.
+std::vector<ClipInfo> inside(const ShadedVertex<1>* v, size_t n) {
+    std::vector<ClipInfo> clip(n);
+    for (size_t i = 0; i < n; ++i) clip[i].X = v[i].X, clip[i].Y = v[i].Y;
+    return clip;
+}
+
 struct Expected {
     std::vector<std::vector<uint32_t>> triangles;  // per tile, in draw order
     std::vector<double> area;                       // per tile
@@ -144,7 +152,7 @@ TEST(Binning, EachTriangleInTheTilesItReachesInDrawOrder) {
         for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
         const FaceState faces{round % 3 == 0 ? CullMode::None : CullMode::Back, FrontFace::CCW};
         TriangleBin<1> bin;
-        bin_triangles(indices, post.data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), faces, FlatVaryings{}, grid, bin);
+        bin_triangles(indices, post.data(), inside(post.data(), post.size()).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), faces, FlatVaryings{}, grid, bin);
 
         const Expected e = expected_bins(post, faces, grid);
         size_t listed = 0;
@@ -178,7 +186,7 @@ TEST(Binning, TriangleCoveringNoSampleIsDropped) {
     for (int i = 0; i < 3; ++i) ASSERT_TRUE(finish_vertex(ClipVertex<1>{window_to_clip(p[i].x, p[i].y, W, H), {}}, Viewport{W, H}, v[i]));
     const uint32_t idx[3] = {0, 1, 2};
     TriangleBin<1> bin;
-    bin_triangles(idx, v, ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
+    bin_triangles(idx, v, inside(v, 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
                      TileGrid(W, H), bin);
     EXPECT_TRUE(bin.refs.empty());
     EXPECT_EQ(bin.range.count(), 0);
@@ -193,7 +201,7 @@ TEST(Binning, SmallTriangleBetweenPixelCentersIsDropped) {
     ASSERT_FALSE(pixel_bounds<1>(v[0], v[1], v[2]).empty());
     const uint32_t idx[3] = {0, 1, 2};
     TriangleBin<1> bin;
-    bin_triangles(idx, v, ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
+    bin_triangles(idx, v, inside(v, 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
                   TileGrid(W, H), bin);
     EXPECT_TRUE(bin.refs.empty());
 }
@@ -222,7 +230,7 @@ TEST(Binning, DropsSmallTrianglesThatCoverNoSampleAndNoOther) {
         if (area2 == 0) continue;
         const uint32_t idx[3] = {0, 1, 2};
         TriangleBin<1> bin;
-        bin_triangles(idx, p.data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW},
+        bin_triangles(idx, p.data(), inside(p.data(), 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW},
                       FlatVaryings{}, grid, bin);
         const Rect r = pixel_bounds<1>(p[0], p[1], p[2]);
         const bool covers = covers_a_sample(p[0], p[1], p[2]), touches = touches_a_center(p[0], p[1], p[2]);
@@ -234,7 +242,7 @@ TEST(Binning, DropsSmallTrianglesThatCoverNoSampleAndNoOther) {
         on_edge += touches && !covers;  // kept for a center on an edge the fill rule gives away
         // 4x MSAA: no triangle whose bounds hold a sample is dropped
         TriangleBin<1> msaa;
-        bin_triangles(idx, p.data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<4>(), FaceState{CullMode::None, FrontFace::CCW},
+        bin_triangles(idx, p.data(), inside(p.data(), 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<4>(), FaceState{CullMode::None, FrontFace::CCW},
                       FlatVaryings{}, grid, msaa);
         ASSERT_EQ(msaa.refs.empty(), pixel_bounds<4>(p[0], p[1], p[2]).empty()) << "triangle " << k;
     }

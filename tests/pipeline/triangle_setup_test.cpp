@@ -84,7 +84,7 @@ void expect_planes_of_the_corner_values(bool noperspective) {
         for (ShadedVertex<N>& v : p) {
             v.window = {60 + 72 * u(rng), 124 + 72 * u(rng), u(rng), 0.05f + 2 * u(rng)};
             v.X = int32_t(snap_to_subpixel(v.window.x)), v.Y = int32_t(snap_to_subpixel(v.window.y));
-            for (float& a : v.clip.var) a = 10 * u(rng) - 5;
+            for (float& a : v.var) a = 10 * u(rng) - 5;
         }
         if (signed_area2(p[0].X, p[0].Y, p[1].X, p[1].Y, p[2].X, p[2].Y) == 0) continue;
         TriangleSetup<N> t;
@@ -102,7 +102,7 @@ void expect_planes_of_the_corner_values(bool noperspective) {
         const double wa = noperspective ? 1.0 : a.window.inv_w, wb = noperspective ? 1.0 : b.window.inv_w,
                      wc = noperspective ? 1.0 : c.window.inv_w;
         for (size_t i = 0; i < size_t(N); ++i)
-            expect_plane(t.var_w(i), a.clip.var[i] * wa, b.clip.var[i] * wb, c.clip.var[i] * wc, "varying ", i);
+            expect_plane(t.var_w(i), a.var[i] * wa, b.var[i] * wb, c.var[i] * wc, "varying ", i);
         if (noperspective) {
             EXPECT_EQ(t.inv_w().a0, 1.0f);
             EXPECT_EQ(t.inv_w().dadx, 0.0f);

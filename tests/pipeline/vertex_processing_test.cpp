@@ -36,29 +36,32 @@ TEST(VertexProcessing, EightAtATimeSameAsOneAtATime) {
     const Viewport vp{317, 211};
     const ClipPlanes planes = ClipPlanes::for_viewport(vp.width, vp.height);
     std::vector<ShadedVertex<1>> out(in.size());
-    process_vertices(ConstantColorShader{}, std::span<const ClipVertexIn>(in), 0, in.size(), planes, vp, std::span<ShadedVertex<1>>(out));
+    std::vector<ClipInfo> clip(in.size());
+    process_vertices(ConstantColorShader{}, std::span<const ClipVertexIn>(in), 0, in.size(), planes, vp, std::span<ShadedVertex<1>>(out),
+                     std::span<ClipInfo>(clip));
 
     int inside = 0, outside = 0, unmapped = 0, nonfinite = 0;
     for (size_t i = 0; i < in.size(); ++i) {
         const glm::vec4 p = in[i].clip;
         const ShadedVertex<1>& o = out[i];
-        ASSERT_EQ(std::bit_cast<glm::uvec4>(o.clip.position), std::bit_cast<glm::uvec4>(p)) << i;
-        ASSERT_EQ(o.clip.var[0], float(i));
+        const ClipInfo& c = clip[i];
+        ASSERT_EQ(std::bit_cast<glm::uvec4>(c.position), std::bit_cast<glm::uvec4>(p)) << i;
+        ASSERT_EQ(o.var[0], float(i));
         const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
         if (!finite) {
-            ASSERT_FALSE(o.finite) << i;
+            ASSERT_FALSE(c.finite) << i;
             ++nonfinite;
             continue;
         }
-        ASSERT_EQ(o.outcode, planes.outcode(p)) << i;
-        if (o.outcode != 0) {
-            ASSERT_TRUE(o.finite) << i;
+        ASSERT_EQ(c.outcode, planes.outcode(p)) << i;
+        if (c.outcode != 0) {
+            ASSERT_TRUE(c.finite) << i;
             ++outside;
             continue;
         }
         WindowPosition wp;
         const bool mapped = to_window(p, vp, wp);
-        ASSERT_EQ(o.finite, mapped) << i;
+        ASSERT_EQ(c.finite, mapped) << i;
         if (!mapped) {
             ++unmapped;
             continue;
@@ -69,6 +72,8 @@ TEST(VertexProcessing, EightAtATimeSameAsOneAtATime) {
         ASSERT_EQ(std::bit_cast<uint32_t>(o.window.inv_w), std::bit_cast<uint32_t>(wp.inv_w)) << i;
         ASSERT_EQ(o.X, snap_to_subpixel(wp.x)) << i;
         ASSERT_EQ(o.Y, snap_to_subpixel(wp.y)) << i;
+        ASSERT_EQ(c.X, o.X) << i;  // (binning reads them from the clip part)
+        ASSERT_EQ(c.Y, o.Y) << i;
         ++inside;
     }
     EXPECT_GT(inside, 300);

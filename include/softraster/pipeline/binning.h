@@ -258,14 +258,14 @@ bool covers_no_center(const V& a, const V& b, const V& c, const Rect& r, const S
 // hold no sample of the framebuffer's pattern (its extent `samples`, sample_pattern.h) is
 // dropped, and so is a small one that covers none of its bounds' samples (covers_no_center).
 template <int N>
-void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
+void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const ClipPlanes& planes,
                    const Viewport& vp, const SampleExtent& samples, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
     const WindingFilter windings(faces);
     bin_pending(bin, indices.size() / 3, [&] {  // (most triangles touch one tile)
         TileBounds tiles;
-        assemble_triangles(indices, post, planes, vp, flat, bin.clipped,
-                           [&](TriangleRef ref, const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c) {
+        assemble_triangles(indices, post, clip, planes, vp, flat, bin.clipped,
+                           [&](TriangleRef ref, const auto& a, const auto& b, const auto& c) {
                                const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
                                if (!windings.survives(area2)) return;
                                const Rect bounds = pixel_bounds(a, b, c, samples);

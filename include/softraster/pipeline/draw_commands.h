@@ -47,6 +47,14 @@ public:
     virtual void process_vertex_chunk(size_t, const DrawTarget&) {}
     virtual size_t primitive_chunks() const { return 0; }
     virtual void bin_primitive_chunk(size_t, const DrawTarget&) {}
+    // A small draw (one chunk of vertices, one of primitives at most) goes through the front
+    // end in one call on one thread: its primitives are binned right after its vertices are
+    // processed, while they are still in this core's cache.
+    bool small() const { return vertex_chunks() <= 1 && primitive_chunks() <= 1; }
+    virtual void process_small(const DrawTarget& target) {
+        if (vertex_chunks() == 1) process_vertex_chunk(0, target);
+        if (primitive_chunks() == 1) bin_primitive_chunk(0, target);
+    }
     // After all chunks are binned (sequentially): the per-tile totals below.
     virtual void finish_binning(const TileGrid&) {}
     // Draws this command's part of one tile; returns the fragments shaded.
@@ -162,16 +170,16 @@ inline constexpr size_t kTriangleChunk = 8192;
 namespace phases {
 template <Shader S>
 void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices, size_t begin, size_t end,
-                      const DrawTarget& target, std::span<ShadedVertex<kVaryingCount<typename S::Varyings>>> out) {
+                      const DrawTarget& target, std::span<ShadedVertex<kVaryingCount<typename S::Varyings>>> out, std::span<ClipInfo> clip) {
     simd::on_best_path([&]<bool WideLanes>() {
-        softraster::process_vertices<WideLanes>(shader, vertices, begin, end, target.planes, target.viewport, out);
+        softraster::process_vertices<WideLanes>(shader, vertices, begin, end, target.planes, target.viewport, out, clip);
     });
 }
 template <int N>
-void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const DrawTarget& target, const SampleExtent& samples,
-                   FaceState faces, FlatVaryings flat, TriangleBin<N>& bin) {
+void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const DrawTarget& target,
+                   const SampleExtent& samples, FaceState faces, FlatVaryings flat, TriangleBin<N>& bin) {
     simd::on_best_path([&]<bool>() {
-        softraster::bin_triangles(indices, post, target.planes, target.viewport, samples, faces, flat, target.grid, bin);
+        softraster::bin_triangles(indices, post, clip, target.planes, target.viewport, samples, faces, flat, target.grid, bin);
     });
 }
 template <int Samples, int N>
@@ -222,15 +230,30 @@ public:
     bool uses_stencil() const override { return state_.stencil_test; }
     void prepare() override {
         post_.resize(vertices_.size());
+        if (!this->small()) clip_.resize(vertices_.size());  // (a small draw's: process_small)
         if (primitive_chunks() > 1) bins_.resize(primitive_chunks());  // (one: one_bin_)
     }
     size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
     void process_vertex_chunk(size_t c, const DrawTarget& target) override {
         const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
-        phases::process_vertices(shader_, vertices_, begin, end, target, std::span<ShadedVertex<N>>(post_));
+        phases::process_vertices(shader_, vertices_, begin, end, target, std::span<ShadedVertex<N>>(post_), std::span<ClipInfo>(clip_));
+    }
+    // A small draw's clip parts are read by its binning alone, right after: they live in a
+    // buffer of the thread's, reused draw after draw and so mostly in its cache, not in the
+    // draw's memory.
+    void process_small(const DrawTarget& target) override {
+        static thread_local std::vector<ClipInfo> clip;
+        clip.resize(vertices_.size());
+        if (vertex_chunks() == 1) phases::process_vertices(shader_, vertices_, 0, vertices_.size(), target, std::span<ShadedVertex<N>>(post_), std::span<ClipInfo>(clip));
+        if (primitive_chunks() == 1) bin_chunk(0, target, clip.data());
     }
     size_t primitive_chunks() const override { return (indices_.size() / kPer + kTriangleChunk - 1) / kTriangleChunk; }
-    void bin_primitive_chunk(size_t c, const DrawTarget& target) override {
+    void bin_primitive_chunk(size_t c, const DrawTarget& target) override { bin_chunk(c, target, clip_.data()); }
+    void finish_binning(const TileGrid& grid) override { sum_bins<N>(bins(), grid); }
+
+protected:
+    // Bins chunk c of the primitives, whose corners' clip parts are `clip`.
+    void bin_chunk(size_t c, const DrawTarget& target, const ClipInfo* clip) {
         const size_t count = indices_.size() / kPer, begin = c * kTriangleChunk, end = std::min(count, begin + kTriangleChunk);
         const std::span<const uint32_t> chunk = indices_.subspan(begin * kPer, (end - begin) * kPer);
         const FlatVaryings flat{kFlatVaryings<S>, state_.provoking_vertex == ProvokingVertex::First};
@@ -239,15 +262,12 @@ public:
         // none of its samples.
         const SampleExtent extent = with_sample_count(target.fb->samples(), []<int Samples>() { return sample_extent<Samples>(); });
         if constexpr (T == Topology::Triangles) {
-            phases::bin_triangles(chunk, post_.data(), target, extent, FaceState{state_.cull, state_.front_face}, flat, bin(c));
+            phases::bin_triangles(chunk, post_.data(), clip, target, extent, FaceState{state_.cull, state_.front_face}, flat, bin(c));
         } else {
             const LinePointShape shape{state_.line_width, state_.point_size, target.fb->samples() > 1, state_.front_face};
-            bin_lines_points(T, chunk, post_.data(), target.planes, target.viewport, extent, shape, flat, target.grid, bin(c));
+            bin_lines_points(T, chunk, post_.data(), clip, target.planes, target.viewport, extent, shape, flat, target.grid, bin(c));
         }
     }
-    void finish_binning(const TileGrid& grid) override { sum_bins<N>(bins(), grid); }
-
-protected:
     BinnedTriangles<N> triangles() const { return {bins(), post_.data()}; }
     // The chunks' bins: a draw of one chunk (most draws: up to kTriangleChunk triangles)
     // keeps its bin inline, an allocation fewer per draw.
@@ -262,6 +282,7 @@ protected:
     std::span<const Vertex> vertices_;
     std::span<const uint32_t> indices_;
     std::vector<ShadedVertex<N>> post_;
+    std::vector<ClipInfo> clip_;  // the clip parts of a draw that is not small (a small one's: process_small)
     std::vector<TriangleBin<N>> bins_;  // two chunks or more
     TriangleBin<N> one_bin_;
 };

@@ -83,8 +83,8 @@ ShadedVertex<N> quad_corner(const WindowVertex<N>& a, const WindowVertex<N>& b, 
     c.window = {x + float(ox) / float(kSubpixelOne), y + float(oy) / float(kSubpixelOne),
                 float(double(a.z) + t * (double(b.z) - a.z)), float(q)};
     for (size_t k = 0; k < size_t(N); ++k)  // var/w is linear too: var = (var/w) / (1/w)
-        c.clip.var[k] = (flat >> k) & 1 ? provoking.var[k]
-                                        : float((double(a.var[k]) * qa + t * (double(b.var[k]) * qb - double(a.var[k]) * qa)) / q);
+        c.var[k] = (flat >> k) & 1 ? provoking.var[k]
+                                   : float((double(a.var[k]) * qa + t * (double(b.var[k]) * qb - double(a.var[k]) * qa)) / q);
     return c;
 }
 
@@ -149,13 +149,13 @@ void point_quad(const WindowVertex<N>& p, const LinePointShape& shape, Emit&& em
 // The front end for one chunk of a draw of lines or points: assembly and clipping
 // (primitive_assembly.h), the quads, then binning (binning.h) of their two triangles each.
 template <int N>
-void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
+void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const ClipPlanes& planes,
                       const Viewport& vp, const SampleExtent& samples, const LinePointShape& shape, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
     bin_pending(bin, 2 * indices.size(), [&] {  // (two triangles a quad)
         TileBounds tiles;
         std::vector<WindowVertex<N>> window;
-        assemble_lines_points(topology, indices, post, planes, vp, window);
+        assemble_lines_points(topology, indices, post, clip, planes, vp, window);
         auto emit = [&](const ShadedVertex<N>& c0, const ShadedVertex<N>& c1, const ShadedVertex<N>& c2, const ShadedVertex<N>& c3) {
             const auto first = uint32_t(bin.clipped.size());
             bin.clipped.insert(bin.clipped.end(), {c0, c1, c2, c3});

@@ -61,34 +61,36 @@ struct FlatVaryings {
     bool first = false;
 };
 
-// Assembles the triangles of `indices` (three per triangle) in order and calls
-// emit(ref, a, b, c) with the corners of each that may be visible, as indices (`ref`,
-// corner_vertex) and as the vertices themselves: as it is when it lies inside every plane,
-// else as the fan (0, k, k+1) of its clipped polygon, whose vertices are appended to
-// `clipped`. The clipper runs against `planes` (near, far, guard band). Every
-// vertex of a clipped polygon carries the flat varyings of the triangle's provoking vertex,
-// so each triangle of its fan has them whichever corner provokes.
+// Assembles the triangles of `indices` (three per triangle, their corners' two parts in post
+// and clip) in order and calls emit(ref, a, b, c) with the corners of each that may be
+// visible, as indices (`ref`, corner_vertex) and as vertices with snapped window positions
+// (X, Y): as it is when it lies inside every plane (their ClipInfo), else as the fan
+// (0, k, k+1) of its clipped polygon, whose vertices are appended to `clipped` (ShadedVertex).
+// The clipper runs against `planes` (near, far, guard band). Every vertex of a clipped
+// polygon carries the flat varyings of the triangle's provoking vertex, so each triangle of
+// its fan has them whichever corner provokes.
 template <int N, class Emit>
-void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipPlanes& planes,
+void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const ClipPlanes& planes,
                         const Viewport& vp, FlatVaryings flat, std::vector<ShadedVertex<N>>& clipped, Emit&& emit) {
     ClipPolygon<N> poly;
     // A triangle's corners sit anywhere in the vertex buffer, and their loads wait behind the
     // last triangle's branches: fetch two corners of the triangle eight places ahead into the
-    // cache (the other is mostly one a recent triangle read). The head of a vertex is what
-    // binning reads (its position and flags), unless the triangle is clipped.
+    // cache (the other is mostly one a recent triangle read): their clip parts, all that
+    // binning reads unless the triangle is clipped.
     constexpr size_t kAhead = 3 * 8;
     for (size_t i = 0; i + 2 < indices.size(); i += 3) {
-        if (i + kAhead + 2 < indices.size()) __builtin_prefetch(post + indices[i + kAhead + 1]), __builtin_prefetch(post + indices[i + kAhead + 2]);
+        if (i + kAhead + 2 < indices.size()) __builtin_prefetch(clip + indices[i + kAhead + 1]), __builtin_prefetch(clip + indices[i + kAhead + 2]);
         const uint32_t ia = indices[i], ib = indices[i + 1], ic = indices[i + 2];
-        const ShadedVertex<N>&a = post[ia], &b = post[ib], &c = post[ic];
-        if (!a.finite || !b.finite || !c.finite) continue;  // NaN or infinite position
-        if (a.outcode & b.outcode & c.outcode) continue;     // all outside one plane
-        const unsigned mask = a.outcode | b.outcode | c.outcode;
+        const ClipInfo &ca = clip[ia], &cb = clip[ib], &cc = clip[ic];
+        if (!ca.finite || !cb.finite || !cc.finite) continue;  // NaN or infinite position
+        if (ca.outcode & cb.outcode & cc.outcode) continue;     // all outside one plane
+        const unsigned mask = ca.outcode | cb.outcode | cc.outcode;
         if (mask == 0) {
-            emit(TriangleRef{{ia, ib, ic}}, a, b, c);
+            emit(TriangleRef{{ia, ib, ic}}, ca, cb, cc);
             continue;
         }
-        const int n = clip_triangle(a.clip, b.clip, c.clip, planes, mask, poly);
+        const ShadedVertex<N>&a = post[ia], &b = post[ib], &c = post[ic];
+        const int n = clip_triangle(clip_vertex(ca, a), clip_vertex(cb, b), clip_vertex(cc, c), planes, mask, poly);
         const auto first = uint32_t(clipped.size());
         int mapped = 0;
         for (int k = 0; k < n; ++k) {
@@ -96,7 +98,7 @@ void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>
             if (!finish_vertex(poly.v[size_t(k)], vp, v)) break;
             const ShadedVertex<N>& provoking = flat.first ? a : c;
             for (size_t j = 0; j < size_t(N); ++j)
-                if ((flat.mask >> j) & 1) v.clip.var[j] = provoking.clip.var[j];
+                if ((flat.mask >> j) & 1) v.var[j] = provoking.var[j];
             clipped.push_back(v);
             ++mapped;
         }
@@ -117,13 +119,13 @@ void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>
 // ones the whole line covers (as llvmpipe). A point is kept when inside the view volume.
 template <int N>
 void assemble_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post,
-                           const ClipPlanes& planes, const Viewport& vp, std::vector<WindowVertex<N>>& out) {
+                           const ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp, std::vector<WindowVertex<N>>& out) {
     const ClipPlanes frustum = ClipPlanes::frustum();
     const size_t per = topology == Topology::Lines ? 2 : 1;
     for (size_t i = 0; i + per <= indices.size(); i += per) {
-        const ShadedVertex<N>&first = post[indices[i]], &last = post[indices[i + per - 1]];
-        if (!first.finite || !last.finite) continue;
-        ClipVertex<N> a = first.clip, b = last.clip;
+        const uint32_t first = indices[i], last = indices[i + per - 1];
+        if (!clip[first].finite || !clip[last].finite) continue;
+        ClipVertex<N> a = clip_vertex(clip[first], post[first]), b = clip_vertex(clip[last], post[last]);
         if (per == 2 ? !clip_line(a, b, planes) : frustum.outcode(a.position) != 0) continue;
         WindowVertex<N> wa, wb;
         if (!to_window(a, vp, wa) || !to_window(b, vp, wb)) continue;

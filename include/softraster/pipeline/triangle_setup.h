@@ -152,7 +152,7 @@ bool setup_coverage(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const 
 template <uint64_t Flat, int N>
 bool constant_varyings(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1, const ShadedVertex<N>& v2) {
     for (size_t k = 0; k < size_t(N); ++k)
-        if (!((Flat >> k) & 1) && !(v0.clip.var[k] == v1.clip.var[k] && v1.clip.var[k] == v2.clip.var[k])) return false;
+        if (!((Flat >> k) & 1) && !(v0.var[k] == v1.var[k] && v1.var[k] == v2.var[k])) return false;
     return true;
 }
 
@@ -215,7 +215,7 @@ using f4 = float __attribute__((vector_size(16)));
 // Lane I's value at corner v before the division by w, as a float: a varying or 1.
 template <int N, int I>
 float corner_value(const ShadedVertex<N>& v) {
-    if constexpr (I < N) return v.clip.var[size_t(I)];
+    if constexpr (I < N) return v.var[size_t(I)];
     else if constexpr (I == N) return 1.0f;
     else return 0.0f;
 }
@@ -226,10 +226,10 @@ template <int N, int Q>
 d4 corner(const ShadedVertex<N>& v, double w) {
     f4 f;
     if constexpr (4 * Q + 4 <= N) {
-        std::memcpy(&f, &v.clip.var[size_t(4 * Q)], sizeof f);
+        std::memcpy(&f, &v.var[size_t(4 * Q)], sizeof f);
     } else if constexpr (N >= 4) {
         f4 last;
-        std::memcpy(&last, &v.clip.var[size_t(N - 4)], sizeof last);
+        std::memcpy(&last, &v.var[size_t(N - 4)], sizeof last);
         const f4 extra{1.0f, 0.0f, 0.0f, 0.0f};
         constexpr auto from = [](int i) { return i < N ? i - (N - 4) : 4 + std::min(i - N, 1); };
         f = __builtin_shufflevector(last, extra, from(4 * Q), from(4 * Q + 1), from(4 * Q + 2), from(4 * Q + 3));
@@ -262,7 +262,7 @@ void setup_planes(TriangleSetup<N>& t) {
         t.constant_varyings = constant_varyings<Flat>(v0, v1, v2);
         if (t.constant_varyings) {
             t.planes.set(size_t(N), Plane{1.0f, 0.0f, 0.0f});
-            for (size_t k = 0; k < size_t(N); ++k) t.planes.set(k, Plane{t.provoking->clip.var[k], 0.0f, 0.0f});
+            for (size_t k = 0; k < size_t(N); ++k) t.planes.set(k, Plane{t.provoking->var[k], 0.0f, 0.0f});
             t.has_planes = true;
             return;
         }
@@ -284,7 +284,7 @@ void setup_planes(TriangleSetup<N>& t) {
     // whatever a sliver's huge 1 / det made of its gradients)
     if (!perspective) t.planes.set(size_t(N), Plane{1.0f, 0.0f, 0.0f});
     for (size_t k = 0; k < size_t(N); ++k)
-        if ((Flat >> k) & 1) t.planes.set(k, Plane{t.provoking->clip.var[k], 0.0f, 0.0f});
+        if ((Flat >> k) & 1) t.planes.set(k, Plane{t.provoking->var[k], 0.0f, 0.0f});
     t.has_planes = true;
 }
 

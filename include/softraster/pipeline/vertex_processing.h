@@ -19,28 +19,39 @@
 
 namespace softraster {
 
-// A vertex after the vertex shader: clip position and varyings, and (when outcode == 0)
-// its window position. Window data of a vertex outside the clip volume is not used: the
-// triangles that touch it go through the clipper.
-// Ordered by who reads it: binning reads the first 16 bytes, setup the window position and
-// the varyings, the clipper the clip vertex. The varyings are stored once (setup reads them
-// from `clip`): a million-triangle mesh has this buffer written and read twice per frame,
-// far larger than the caches, so every byte of it is memory traffic.
+// A vertex after the vertex shader, in two parts kept in two arrays, by who reads them.
+// ClipInfo: what the front end reads, right after vertex processing made it: primitive
+// assembly its flags, binning its snapped window position, the clipper its clip position.
+struct ClipInfo {
+    glm::vec4 position;    // homogeneous clip coordinates
+    int32_t X = 0, Y = 0;  // window position in 24.8 fixed point (snapped), valid when outcode == 0
+    unsigned outcode = 0;  // planes of ClipPlanes::for_viewport it is outside of
+    bool finite = true;    // all clip coordinates finite
+};
+// ShadedVertex: what the back end's setup reads, long after vertex processing wrote it: its
+// snapped and window positions (valid when the outcode is 0: the triangles that touch a
+// vertex outside the clip volume go through the clipper) and its varyings. A million-triangle
+// mesh, or twenty thousand small objects, have this buffer far larger than the caches, so
+// every byte of it is memory traffic: with the clip part in it, a vertex of six varyings
+// took 72 bytes, not 48 (docs/performance.md).
 template <int N>
 struct ShadedVertex {
-    int32_t X = 0, Y = 0;   // window position in 24.8 fixed point (snapped)
-    unsigned outcode = 0;   // planes of ClipPlanes::for_viewport it is outside of
-    bool finite = true;     // all clip coordinates finite
-    WindowPosition window;  // valid when outcode == 0
-    ClipVertex<N> clip;
+    int32_t X = 0, Y = 0;      // window position in 24.8 fixed point (snapped)
+    WindowPosition window;     // window position, depth and 1/w
+    std::array<float, N> var;  // varyings
 };
+
+// The clipper's view of a vertex: its clip position with its varyings.
+template <int N>
+ClipVertex<N> clip_vertex(const ClipInfo& c, const ShadedVertex<N>& v) {
+    return {c.position, v.var};
+}
 
 // Maps a clipped (or inside) vertex to window space and snaps it. False if it cannot be
 // mapped (w <= 0 or non-finite results: degenerate user matrices).
 template <int N>
 bool finish_vertex(const ClipVertex<N>& c, const Viewport& vp, ShadedVertex<N>& out) {
-    out.clip = c;
-    out.outcode = 0;
+    out.var = c.var;
     if (!to_window(c.position, vp, out.window)) return false;
     out.X = int32_t(snap_to_subpixel(out.window.x));
     out.Y = int32_t(snap_to_subpixel(out.window.y));
@@ -53,11 +64,11 @@ bool finish_vertex(const ClipVertex<N>& c, const Viewport& vp, ShadedVertex<N>& 
 // window_coordinates), so the results are the same bits as one vertex at a time (no
 // contraction: CMakeLists.txt).
 template <int N>
-void finish_vertices8(ShadedVertex<N>* out, const ClipPlanes& planes, const Viewport& vp) {
+void finish_vertices8(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
     using namespace simd;
     f8 x, y, z, w;
     for (int l = 0; l < kLanes; ++l) {
-        const glm::vec4& p = out[l].clip.position;
+        const glm::vec4& p = clip[l].position;
         x[l] = p.x, y[l] = p.y, z[l] = p.z, w[l] = p.w;
     }
     // |v| <= FLT_MAX: false for infinities and NaN, as !std::isfinite
@@ -73,16 +84,17 @@ void finish_vertices8(ShadedVertex<N>* out, const ClipPlanes& planes, const View
     const i8 mapped = (w > 0.0f) & finite(wx) & finite(wy) & finite(wz) & finite(inv_w);
     for (int l = 0; l < kLanes; ++l) {
         ShadedVertex<N>& o = out[l];
-        o.finite = in_range[l] != 0;
-        o.outcode = unsigned(outcode[l]);
-        if (!o.finite || o.outcode != 0) continue;
+        ClipInfo& c = clip[l];
+        c.finite = in_range[l] != 0;
+        c.outcode = unsigned(outcode[l]);
+        if (!c.finite || c.outcode != 0) continue;
         if (!mapped[l]) {
-            o.finite = false;
+            c.finite = false;
             continue;
         }
         o.window = {wx[l], wy[l], wz[l], inv_w[l]};
-        o.X = int32_t(snap_to_subpixel(wx[l]));
-        o.Y = int32_t(snap_to_subpixel(wy[l]));
+        o.X = c.X = int32_t(snap_to_subpixel(wx[l]));
+        o.Y = c.Y = int32_t(snap_to_subpixel(wy[l]));
     }
 }
 
@@ -90,38 +102,41 @@ void finish_vertices8(ShadedVertex<N>* out, const ClipPlanes& planes, const View
 // alone, so it is compiled once per count (src/scene/surface_phases.cpp), not again with
 // every shader; a call per eight vertices costs nothing that shows.
 template <int N>
-[[gnu::noinline]] SOFTRASTER_AVX2_TARGET void finish_vertices8_wide(ShadedVertex<N>* out, const ClipPlanes& planes, const Viewport& vp) {
-    finish_vertices8(out, planes, vp);
+[[gnu::noinline]] SOFTRASTER_AVX2_TARGET void finish_vertices8_wide(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
+    finish_vertices8(out, clip, planes, vp);
 }
 template <int N>
-[[gnu::noinline]] void finish_vertices8_generic(ShadedVertex<N>* out, const ClipPlanes& planes, const Viewport& vp) {
-    finish_vertices8(out, planes, vp);
+[[gnu::noinline]] void finish_vertices8_generic(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
+    finish_vertices8(out, clip, planes, vp);
 }
 
-// Shades vertices [begin, end) of `vertices` into out[begin, end): the vertex shader one
-// vertex at a time, the fixed-function part eight at a time. WideLanes: in the AVX2 copy.
+// Shades vertices [begin, end) of `vertices` into out[begin, end) and clip[begin, end): the
+// vertex shader one vertex at a time, the fixed-function part eight at a time. WideLanes:
+// in the AVX2 copy.
 template <bool WideLanes = false, Shader S>
 void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices, size_t begin, size_t end,
                       const ClipPlanes& planes, const Viewport& vp,
-                      std::span<ShadedVertex<kVaryingCount<typename S::Varyings>>> out) {
+                      std::span<ShadedVertex<kVaryingCount<typename S::Varyings>>> out, std::span<ClipInfo> clip) {
     auto shade = [&](size_t i) {
         typename S::Varyings v{};
-        out[i].clip.position = shader.vertex(vertices[i], v);
-        out[i].clip.var = to_array(v);
+        clip[i].position = shader.vertex(vertices[i], v);
+        out[i].var = to_array(v);
     };
     size_t i = begin;
     for (; i + simd::kLanes <= end; i += simd::kLanes) {
         for (size_t l = 0; l < size_t(simd::kLanes); ++l) shade(i + l);
-        if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) finish_vertices8_wide(&out[i], planes, vp);
-        else finish_vertices8_generic(&out[i], planes, vp);
+        if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) finish_vertices8_wide(&out[i], &clip[i], planes, vp);
+        else finish_vertices8_generic(&out[i], &clip[i], planes, vp);
     }
     for (; i < end; ++i) {  // the last few
         shade(i);
-        auto& o = out[i];
-        const glm::vec4 p = o.clip.position;
-        o.finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
-        o.outcode = o.finite ? planes.outcode(p) : 0;
-        if (o.outcode == 0 && o.finite && !finish_vertex(o.clip, vp, o)) o.finite = false;
+        ClipInfo& c = clip[i];
+        const glm::vec4 p = c.position;
+        c.finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+        c.outcode = c.finite ? planes.outcode(p) : 0;
+        if (c.outcode != 0 || !c.finite) continue;
+        if (!finish_vertex(clip_vertex(c, out[i]), vp, out[i])) c.finite = false;
+        c.X = out[i].X, c.Y = out[i].Y;
     }
 }
 
