@@ -209,6 +209,14 @@ uint64_t draw_tile_general(const LayoutShader<L>& shader, const FragmentOps& ops
 }
 }  // namespace phases
 
+// The clip parts of the small draw the calling thread is processing (process_small below):
+// one buffer for every draw and every shader, reused draw after draw and so mostly in the
+// core's cache.
+inline std::vector<ClipInfo>& small_draw_clip_parts() {
+    static thread_local std::vector<ClipInfo> clip;
+    return clip;
+}
+
 // The front end of a draw, the same for both back ends: vertex processing and binning in
 // chunks (binned for the extent of the framebuffer's sample pattern), then the draw's triangles
 // per tile. Of lines or points (T), the triangles of their quads (line_point_quads.h).
@@ -239,10 +247,9 @@ public:
         phases::process_vertices(shader_, vertices_, begin, end, target, std::span<ShadedVertex<N>>(post_), std::span<ClipInfo>(clip_));
     }
     // A small draw's clip parts are read by its binning alone, right after: they live in a
-    // buffer of the thread's, reused draw after draw and so mostly in its cache, not in the
-    // draw's memory.
+    // buffer of the thread's (small_draw_clip_parts), not in the draw's memory.
     void process_small(const DrawTarget& target) override {
-        static thread_local std::vector<ClipInfo> clip;
+        std::vector<ClipInfo>& clip = small_draw_clip_parts();
         clip.resize(vertices_.size());
         if (vertex_chunks() == 1) phases::process_vertices(shader_, vertices_, 0, vertices_.size(), target, std::span<ShadedVertex<N>>(post_), std::span<ClipInfo>(clip));
         if (primitive_chunks() == 1) bin_chunk(0, target, clip.data());
