@@ -47,15 +47,21 @@ ClipVertex<N> clip_vertex(const ClipInfo& c, const ShadedVertex<N>& v) {
     return {c.position, v.var};
 }
 
-// Maps a clipped (or inside) vertex to window space and snaps it. False if it cannot be
-// mapped (w <= 0 or non-finite results: degenerate user matrices).
+// Maps clip position p to window space and snaps it, into out's positions (its varyings
+// untouched). False if it cannot be mapped (w <= 0 or non-finite results: degenerate user
+// matrices).
 template <int N>
-bool finish_vertex(const ClipVertex<N>& c, const Viewport& vp, ShadedVertex<N>& out) {
-    out.var = c.var;
-    if (!to_window(c.position, vp, out.window)) return false;
+bool map_to_window(const glm::vec4& p, const Viewport& vp, ShadedVertex<N>& out) {
+    if (!to_window(p, vp, out.window)) return false;
     out.X = int32_t(snap_to_subpixel(out.window.x));
     out.Y = int32_t(snap_to_subpixel(out.window.y));
     return true;
+}
+// The same for a clipped (or inside) vertex, with its varyings.
+template <int N>
+bool finish_vertex(const ClipVertex<N>& c, const Viewport& vp, ShadedVertex<N>& out) {
+    out.var = c.var;
+    return map_to_window(c.position, vp, out);
 }
 
 // The fixed-function part of vertex processing for eight shaded vertices at once (their
@@ -135,7 +141,7 @@ void process_vertices(const S& shader, std::span<const typename S::Vertex> verti
         c.finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
         c.outcode = c.finite ? planes.outcode(p) : 0;
         if (c.outcode != 0 || !c.finite) continue;
-        if (!finish_vertex(clip_vertex(c, out[i]), vp, out[i])) c.finite = false;
+        if (!map_to_window(p, vp, out[i])) c.finite = false;
         c.X = out[i].X, c.Y = out[i].Y;
     }
 }
