@@ -51,10 +51,7 @@ public:
     // end in one call on one thread: its primitives are binned right after its vertices are
     // processed, while they are still in this core's cache.
     bool small() const { return vertex_chunks() <= 1 && primitive_chunks() <= 1; }
-    virtual void process_small(const DrawTarget& target) {
-        if (vertex_chunks() == 1) process_vertex_chunk(0, target);
-        if (primitive_chunks() == 1) bin_primitive_chunk(0, target);
-    }
+    virtual void process_small(const DrawTarget&) {}
     // After all chunks are binned (sequentially): the per-tile totals below.
     virtual void finish_binning(const TileGrid&) {}
     // Draws this command's part of one tile; returns the fragments shaded.
