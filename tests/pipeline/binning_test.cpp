@@ -152,7 +152,7 @@ TEST(Binning, EachTriangleInTheTilesItReachesInDrawOrder) {
         for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
         const FaceState faces{round % 3 == 0 ? CullMode::None : CullMode::Back, FrontFace::CCW};
         TriangleBin<1> bin;
-        bin_triangles(indices, post.data(), inside(post.data(), post.size()).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), faces, FlatVaryings{}, grid, bin);
+        bin_triangles<false>(indices, post.data(), inside(post.data(), post.size()).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), faces, FlatVaryings{}, grid, bin);
 
         const Expected e = expected_bins(post, faces, grid);
         size_t listed = 0;
@@ -186,7 +186,7 @@ TEST(Binning, TriangleCoveringNoSampleIsDropped) {
     for (int i = 0; i < 3; ++i) ASSERT_TRUE(finish_vertex(ClipVertex<1>{window_to_clip(p[i].x, p[i].y, W, H), {}}, Viewport{W, H}, v[i]));
     const uint32_t idx[3] = {0, 1, 2};
     TriangleBin<1> bin;
-    bin_triangles(idx, v, inside(v, 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
+    bin_triangles<false>(idx, v, inside(v, 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
                      TileGrid(W, H), bin);
     EXPECT_TRUE(bin.refs.empty());
     EXPECT_EQ(bin.range.count(), 0);
@@ -201,7 +201,7 @@ TEST(Binning, SmallTriangleBetweenPixelCentersIsDropped) {
     ASSERT_FALSE(pixel_bounds<1>(v[0], v[1], v[2]).empty());
     const uint32_t idx[3] = {0, 1, 2};
     TriangleBin<1> bin;
-    bin_triangles(idx, v, inside(v, 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
+    bin_triangles<false>(idx, v, inside(v, 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW}, FlatVaryings{},
                   TileGrid(W, H), bin);
     EXPECT_TRUE(bin.refs.empty());
 }
@@ -230,7 +230,7 @@ TEST(Binning, DropsSmallTrianglesThatCoverNoSampleAndNoOther) {
         if (area2 == 0) continue;
         const uint32_t idx[3] = {0, 1, 2};
         TriangleBin<1> bin;
-        bin_triangles(idx, p.data(), inside(p.data(), 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW},
+        bin_triangles<false>(idx, p.data(), inside(p.data(), 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<1>(), FaceState{CullMode::None, FrontFace::CCW},
                       FlatVaryings{}, grid, bin);
         const Rect r = pixel_bounds<1>(p[0], p[1], p[2]);
         const bool covers = covers_a_sample(p[0], p[1], p[2]), touches = touches_a_center(p[0], p[1], p[2]);
@@ -242,11 +242,85 @@ TEST(Binning, DropsSmallTrianglesThatCoverNoSampleAndNoOther) {
         on_edge += touches && !covers;  // kept for a center on an edge the fill rule gives away
         // 4x MSAA: no triangle whose bounds hold a sample is dropped
         TriangleBin<1> msaa;
-        bin_triangles(idx, p.data(), inside(p.data(), 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<4>(), FaceState{CullMode::None, FrontFace::CCW},
+        bin_triangles<false>(idx, p.data(), inside(p.data(), 3).data(), ClipPlanes::for_viewport(W, H), Viewport{W, H}, sample_extent<4>(), FaceState{CullMode::None, FrontFace::CCW},
                       FlatVaryings{}, grid, msaa);
         ASSERT_EQ(msaa.refs.empty(), pixel_bounds<4>(p[0], p[1], p[2]).empty()) << "triangle " << k;
     }
     EXPECT_GT(dropped, 2000);
     EXPECT_GT(kept, 2000);
     EXPECT_GT(on_edge, 100);
+}
+
+// Binning eight triangles at a time (binning_verdicts8, on each CPU path) gives the bins one
+// at a time gives, to the bit: triangles inside and crossing the clip planes, behind the eye,
+// with a NaN corner, of both windings and none, from a hundredth of a pixel to past the guard
+// band, in one tile or many or off the picture, each cull mode, single-sampled and 4x.
+TEST(Binning, EightAtATimeSameAsOneAtATime) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0, 1);
+    constexpr int kW = 300, kH = 200;  // (not whole tiles)
+    const TileGrid grid(kW, kH);
+    const ClipPlanes planes = ClipPlanes::for_viewport(kW, kH);
+    const Viewport vp{kW, kH};
+    size_t kinds[3] = {0, 0, 0};  // triangles binned in one tile, in several, none
+    for (int round = 0; round < 60; ++round) {
+        // Triangle soup: a center in clip space, corners around it at one of several scales.
+        std::vector<ShadedVertex<1>> post;
+        std::vector<ClipInfo> clip;
+        const int triangles = 8 + round * 7;  // (batches of eight and tails)
+        for (int t = 0; t < triangles; ++t) {
+            const float scales[] = {0.0001f, 0.004f, 0.01f, 0.05f, 0.3f, 3.0f, 300.0f};
+            const float scale = scales[size_t(rng() % 7)];
+            const float cx = -1.3f + 2.6f * u(rng), cy = -1.3f + 2.6f * u(rng), w = u(rng) < 0.05f ? -0.5f : 0.5f + u(rng);
+            for (int k = 0; k < 3; ++k) {
+                ClipInfo c;
+                c.position = glm::vec4((cx + scale * (u(rng) - 0.5f)) * w, (cy + scale * (u(rng) - 0.5f)) * w, (u(rng) - 0.5f) * w, w);
+                if (rng() % 97 == 0) c.position.x = NAN;
+                if (rng() % 89 == 0) c.position.w = 1e-4f * (u(rng) - 0.5f);  // near the eye: clipped or behind it
+                clip.push_back(c);
+                ShadedVertex<1> v;
+                v.var[0] = u(rng);
+                post.push_back(v);
+            }
+        }
+        while (post.size() % 8) post.push_back({}), clip.push_back({});
+        for (size_t k = 0; k < post.size(); k += 8) finish_vertices8_generic(&post[k], &clip[k], planes, vp);
+        std::vector<uint32_t> indices(size_t(triangles) * 3);
+        for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
+        for (CullMode cull : {CullMode::None, CullMode::Back, CullMode::Front})
+            for (bool msaa : {false, true}) {
+                const FaceState faces{cull, FrontFace::CCW};
+                const SampleExtent samples = msaa ? sample_extent<4>() : sample_extent<1>();
+                TriangleBin<1> one;
+                bin_triangles<false, 1, false>(indices, post.data(), clip.data(), planes, vp, samples, faces, FlatVaryings{}, grid, one);
+                for (bool generic : {false, true}) {
+                    simd::use_generic_path(generic);
+                    TriangleBin<1> eight;
+                    simd::on_best_path([&]<bool Wide>() {
+                        bin_triangles<Wide>(indices, post.data(), clip.data(), planes, vp, samples, faces, FlatVaryings{}, grid, eight);
+                    });
+                    const std::string what = "round " + std::to_string(round) + " cull " + std::to_string(int(cull)) + (msaa ? " 4x" : "") +
+                                             (generic ? " generic" : "");
+                    ASSERT_EQ(eight.refs.size(), one.refs.size()) << what;
+                    for (size_t k = 0; k < one.refs.size(); ++k)
+                        for (int c = 0; c < 3; ++c) ASSERT_EQ(eight.refs[k].v[c], one.refs[k].v[c]) << what << " ref " << k;
+                    ASSERT_EQ(eight.tile_begin, one.tile_begin) << what;
+                    ASSERT_EQ(eight.covered_area.size(), one.covered_area.size()) << what;
+                    for (size_t k = 0; k < one.covered_area.size(); ++k)
+                        ASSERT_EQ(std::bit_cast<uint32_t>(eight.covered_area[k]), std::bit_cast<uint32_t>(one.covered_area[k])) << what << " tile " << k;
+                    ASSERT_EQ(std::tie(eight.range.x0, eight.range.y0, eight.range.x1, eight.range.y1),
+                              std::tie(one.range.x0, one.range.y0, one.range.x1, one.range.y1)) << what;
+                    ASSERT_EQ(eight.clipped.size(), one.clipped.size()) << what;
+                }
+                simd::use_generic_path(false);
+                // How many triangles went each way (one tile, several, none), to see the cases are met.
+                std::vector<int> tiles_of(indices.size() / 3, 0);
+                for (const TriangleRef& r : one.refs)
+                    if (!(r.v[0] & kClippedVertex)) ++tiles_of[r.v[0] / 3];
+                for (int n : tiles_of) ++kinds[n == 1 ? 0 : n > 1 ? 1 : 2];
+            }
+    }
+    EXPECT_GT(kinds[0], 5000u);
+    EXPECT_GT(kinds[1], 1000u);
+    EXPECT_GT(kinds[2], 5000u);
 }

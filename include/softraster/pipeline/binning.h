@@ -15,7 +15,9 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -24,7 +26,12 @@
 #include "softraster/pipeline/pipeline_types.h"
 #include "softraster/pipeline/primitive_assembly.h"
 #include "softraster/pipeline/sample_pattern.h"
+#include "softraster/pipeline/simd.h"
 #include "softraster/pipeline/vertex_processing.h"
+
+#if SOFTRASTER_HAS_AVX2_PATH
+#include <immintrin.h>
+#endif
 
 namespace softraster {
 
@@ -253,25 +260,157 @@ bool covers_no_center(const V& a, const V& b, const V& c, const Rect& r, const S
     return (outside[0] & outside[1] & outside[2] & outside[3]) < 0;
 }
 
+// ---- eight triangles at a time
+//
+// Most triangles of a detailed mesh lie inside every clip plane and within one tile, and
+// each takes the same few tests: finite corners, outcodes, winding, bounds, a covered
+// center, its tile. Per triangle those tests are branches in an order a mesh makes hard to
+// predict; here they run on eight triangles at once, in lanes, and only what they decide is
+// done per triangle: nothing, one pending pair, or (clipped, larger than a tile, or its
+// corners far apart) the one-at-a-time path above. The decisions are the same (the
+// Binning.EightAtATimeSameAsOneAtATime test).
+
+// Corner k of eight triangles, one per lane: snapped position, outcode, and finiteness in
+// the low byte (ClipInfo's fields from X on).
+struct Corners8 {
+    simd::i8 X[3], Y[3], outcode[3], finite[3];
+};
+template <bool Wide>
+inline void load_corners8(const uint32_t* indices, const ClipInfo* clip, Corners8& out) {
+    for (int t = 0; t < simd::kLanes; ++t)
+        for (int k = 0; k < 3; ++k) {
+            const ClipInfo& c = clip[indices[3 * t + k]];
+            out.X[k][t] = c.X, out.Y[k][t] = c.Y, out.outcode[k][t] = int32_t(c.outcode), out.finite[k][t] = c.finite;
+        }
+}
+#if SOFTRASTER_HAS_AVX2_PATH
+// The 16 bytes from X on of each corner, triangles t and t + 4 in one register, then a 4x4
+// transpose in each half (as load_footprints): 24 loads and 12 shuffles for 96 fields.
+template <>
+[[gnu::target("avx2")]] inline void load_corners8<true>(const uint32_t* indices, const ClipInfo* clip, Corners8& out) {
+    static_assert(sizeof(ClipInfo) == 32 && offsetof(ClipInfo, X) == 16 && offsetof(ClipInfo, Y) == 20 && offsetof(ClipInfo, outcode) == 24 &&
+                  offsetof(ClipInfo, finite) == 28);
+    for (int k = 0; k < 3; ++k) {
+        __m256i r[4];
+        for (int t = 0; t < 4; ++t) {
+            const auto* low = reinterpret_cast<const __m128i*>(&clip[indices[3 * t + k]].X);
+            const auto* high = reinterpret_cast<const __m128i*>(&clip[indices[3 * (t + 4) + k]].X);
+            r[t] = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_loadu_si128(low)), _mm_loadu_si128(high), 1);
+        }
+        const __m256i xy01 = _mm256_unpacklo_epi32(r[0], r[1]), of01 = _mm256_unpackhi_epi32(r[0], r[1]);
+        const __m256i xy23 = _mm256_unpacklo_epi32(r[2], r[3]), of23 = _mm256_unpackhi_epi32(r[2], r[3]);
+        out.X[k] = simd::i8(_mm256_unpacklo_epi64(xy01, xy23)), out.Y[k] = simd::i8(_mm256_unpackhi_epi64(xy01, xy23));
+        out.outcode[k] = simd::i8(_mm256_unpacklo_epi64(of01, of23)), out.finite[k] = simd::i8(_mm256_unpackhi_epi64(of01, of23));
+    }
+}
+#endif
+
+// What binning does with each of eight triangles, and for a triangle in one tile, the tile
+// and its pending area.
+enum BinVerdict : int32_t { kDrop = 0, kOneTile = 1, kOneAtATime = 2 };
+struct Verdicts8 {
+    simd::i8 verdict, tx, ty;
+    simd::f8 area;
+};
+// The tests of bin_triangles' one-at-a-time path (assemble_triangle, the winding filter,
+// pixel_bounds, covers_no_center, add_to_tiles' one-tile case), in the same order, on lanes.
+// Where a triangle's corners lie within 2^15 (128 pixels) of each other each way, its edge
+// products fit in 32 bits, so area2 and the edges are exact in 32-bit lanes; others go one
+// at a time. (The arithmetic is unsigned, which wraps: lanes it is not exact in are not used.)
+inline void binning_verdicts8(const Corners8& c, const SampleExtent& s, const WindingFilter& windings, const TileGrid& grid, Verdicts8& out) {
+    using simd::i8, simd::f8, simd::select, simd::splat_i;
+    using u8 = uint32_t __attribute__((vector_size(32)));
+    auto u = [](const i8& v) { return std::bit_cast<u8>(v); };
+    auto i = [](const u8& v) { return std::bit_cast<i8>(v); };
+    auto min = [](const i8& a, const i8& b) { return select(a < b, a, b); };
+    auto max = [](const i8& a, const i8& b) { return select(a > b, a, b); };
+    const i8 finite = ((c.finite[0] & c.finite[1] & c.finite[2]) & 0xff) != 0;
+    const i8 outside_one = (c.outcode[0] & c.outcode[1] & c.outcode[2]) != 0;
+    const i8 clipped = (c.outcode[0] | c.outcode[1] | c.outcode[2]) != 0;
+    const i8 x_lo = min(min(c.X[0], c.X[1]), c.X[2]), x_hi = max(max(c.X[0], c.X[1]), c.X[2]);
+    const i8 y_lo = min(min(c.Y[0], c.Y[1]), c.Y[2]), y_hi = max(max(c.Y[0], c.Y[1]), c.Y[2]);
+    const i8 near = (i(u(x_hi) - u(x_lo)) < (1 << 15)) & (i(u(y_hi) - u(y_lo)) < (1 << 15));  // (0 <= each: x_hi >= x_lo)
+    // signed_area2, the winding filter.
+    const i8 area2 = i((u(c.X[1]) - u(c.X[0])) * (u(c.Y[2]) - u(c.Y[0])) - (u(c.Y[1]) - u(c.Y[0])) * (u(c.X[2]) - u(c.X[0])));
+    const i8 survives = ((area2 > 0) & splat_i(windings.keep_cw ? -1 : 0)) | ((area2 < 0) & splat_i(windings.keep_ccw ? -1 : 0));
+    // pixel_bounds.
+    constexpr int kRoundUp = int(kSubpixelOne) - 1;
+    const i8 bx0 = (x_lo - s.x_hi + kRoundUp) >> kSubpixelBits, by0 = (y_lo - s.y_hi + kRoundUp) >> kSubpixelBits;
+    const i8 bx1 = ((x_hi - s.x_lo) >> kSubpixelBits) + 1, by1 = ((y_hi - s.y_lo) >> kSubpixelBits) + 1;
+    const i8 empty = (bx0 >= bx1) | (by0 >= by1);
+    // covers_no_center, on bounds of at most 2x2 pixels of a single-sampled framebuffer.
+    i8 no_center = splat_i(0);
+    if (s.x_lo == s.x_hi && s.y_lo == s.y_hi) {
+        const u8 ox = u(bx0 * int32_t(kSubpixelOne) + s.x_lo), oy = u(by0 * int32_t(kSubpixelOne) + s.y_lo);
+        const u8 xs[3] = {u(c.X[0]) - ox, u(c.X[1]) - ox, u(c.X[2]) - ox}, ys[3] = {u(c.Y[0]) - oy, u(c.Y[1]) - oy, u(c.Y[2]) - oy};
+        const u8 sign = u(select(area2 < 0, splat_i(-1), splat_i(1)));
+        u8 outside[4] = {};
+        for (int e = 0; e < 3; ++e) {
+            const int n = e < 2 ? e + 1 : 0;
+            const u8 dx = sign * (xs[n] - xs[e]), dy = sign * (ys[n] - ys[e]);
+            const u8 first = dy * xs[e] - dx * ys[e], right = (0u - dy) * uint32_t(kSubpixelOne), down = dx * uint32_t(kSubpixelOne);
+            outside[0] |= first, outside[1] |= first + right, outside[2] |= first + down, outside[3] |= first + right + down;
+        }
+        no_center = (bx1 - bx0 <= 2) & (by1 - by0 <= 2) & (i(outside[0] & outside[1] & outside[2] & outside[3]) < 0);
+    }
+    // add_to_tiles: the bounds within the picture, their tiles, the pending area.
+    const i8 rx0 = max(bx0, splat_i(0)), ry0 = max(by0, splat_i(0)), rx1 = min(bx1, splat_i(grid.width)), ry1 = min(by1, splat_i(grid.height));
+    const i8 off_picture = (rx0 >= rx1) | (ry0 >= ry1);
+    static_assert(kTileSize == 64);  // (r.x0 >= 0 and r.x1 >= 1 where the bounds are not empty: the shifts are divisions)
+    out.tx = rx0 >> 6, out.ty = ry0 >> 6;
+    const i8 one_tile = (out.tx == ((rx1 - 1) >> 6)) & (out.ty == ((ry1 - 1) >> 6));
+    const f8 area = simd::to_float(select(area2 < 0, -area2, area2)) * (0.5f / float(kSubpixelOne * kSubpixelOne));
+    const f8 box = simd::to_float((rx1 - rx0) * (ry1 - ry0));
+    out.area = select(area < box, area, box);  // (std::min(box, area))
+    const i8 drop = ~finite | outside_one | (~clipped & near & (~survives | empty | no_center | off_picture));
+    const i8 alone = ~drop & (clipped | ~near | ~one_tile);
+    out.verdict = select(drop, splat_i(kDrop), select(alone, splat_i(kOneAtATime), splat_i(kOneTile)));
+}
+
 // The front end's triangle half for one chunk of a draw, stage by stage: primitive assembly
 // and clipping (primitive_assembly.h), culling (culling.h), binning. A triangle whose bounds
 // hold no sample of the framebuffer's pattern (its extent `samples`, sample_pattern.h) is
 // dropped, and so is a small one that covers none of its bounds' samples (covers_no_center).
-template <int N>
+// Eight triangles at a time (binning_verdicts8) unless Batched is false (the tests' reference).
+template <bool Wide, int N, bool Batched = true>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const ClipPlanes& planes,
                    const Viewport& vp, const SampleExtent& samples, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
     bin.clipped.clear();
     const WindingFilter windings(faces);
     bin_pending(bin, indices.size() / 3, [&] {  // (most triangles touch one tile)
         TileBounds tiles;
-        assemble_triangles(indices, post, clip, planes, vp, flat, bin.clipped,
-                           [&](TriangleRef ref, const auto& a, const auto& b, const auto& c) {
-                               const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
-                               if (!windings.survives(area2)) return;
-                               const Rect bounds = pixel_bounds(a, b, c, samples);
-                               if (bounds.empty() || covers_no_center(a, b, c, bounds, samples, area2)) return;
-                               add_to_tiles(bin, tiles, grid, ref, a, b, c, bounds, area2);
-                           });
+        auto emit = [&](TriangleRef ref, const auto& a, const auto& b, const auto& c) {
+            const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);
+            if (!windings.survives(area2)) return;
+            const Rect bounds = pixel_bounds(a, b, c, samples);
+            if (bounds.empty() || covers_no_center(a, b, c, bounds, samples, area2)) return;
+            add_to_tiles(bin, tiles, grid, ref, a, b, c, bounds, area2);
+        };
+        size_t i = 0;
+        if constexpr (Batched) {
+            ClipPolygon<N> poly;
+            constexpr size_t kBatch = 3 * simd::kLanes;
+            for (; i + kBatch <= indices.size(); i += kBatch) {
+                const uint32_t* at = indices.data() + i;
+                // (The next batch's corners into the cache meanwhile, as assemble_triangles.)
+                if (i + 2 * kBatch <= indices.size())
+                    for (size_t k = 0; k < simd::kLanes; ++k) __builtin_prefetch(clip + at[kBatch + 3 * k + 1]), __builtin_prefetch(clip + at[kBatch + 3 * k + 2]);
+                Corners8 corners;
+                load_corners8<Wide>(at, clip, corners);
+                Verdicts8 v;
+                binning_verdicts8(corners, samples, windings, grid, v);
+                for (int t = 0; t < simd::kLanes; ++t) {
+                    const uint32_t* ref = at + 3 * t;
+                    if (v.verdict[t] == kOneTile) {
+                        tiles.include(v.tx[t], v.ty[t], v.tx[t], v.ty[t]);
+                        bin.pending.push_back({uint16_t(v.tx[t]), uint16_t(v.ty[t]), v.area[t], TriangleRef{{ref[0], ref[1], ref[2]}}});
+                    } else if (v.verdict[t] == kOneAtATime) {
+                        assemble_triangle(ref[0], ref[1], ref[2], post, clip, planes, vp, flat, bin.clipped, poly, emit);
+                    }
+                }
+            }
+        }
+        assemble_triangles(indices.subspan(i), post, clip, planes, vp, flat, bin.clipped, emit);
         bin.range = tiles.range();
     });
 }

@@ -175,8 +175,8 @@ void process_vertices(const S& shader, std::span<const typename S::Vertex> verti
 template <int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const DrawTarget& target,
                    const SampleExtent& samples, FaceState faces, FlatVaryings flat, TriangleBin<N>& bin) {
-    simd::on_best_path([&]<bool>() {
-        softraster::bin_triangles(indices, post, clip, target.planes, target.viewport, samples, faces, flat, target.grid, bin);
+    simd::on_best_path([&]<bool WideLanes>() {
+        softraster::bin_triangles<WideLanes>(indices, post, clip, target.planes, target.viewport, samples, faces, flat, target.grid, bin);
     });
 }
 template <int Samples, int N>

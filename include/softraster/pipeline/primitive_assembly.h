@@ -61,14 +61,42 @@ struct FlatVaryings {
     bool first = false;
 };
 
-// Assembles the triangles of `indices` (three per triangle, their corners' two parts in post
-// and clip) in order and calls emit(ref, a, b, c) with the corners of each that may be
-// visible, as indices (`ref`, corner_vertex) and as vertices with snapped window positions
-// (X, Y): as it is when it lies inside every plane (their ClipInfo), else as the fan
-// (0, k, k+1) of its clipped polygon, whose vertices are appended to `clipped` (ShadedVertex).
-// The clipper runs against `planes` (near, far, guard band). Every vertex of a clipped
+// Assembles triangle (ia, ib, ic) (its corners' two parts in post and clip) and calls
+// emit(ref, a, b, c) if it may be visible, with its corners as indices (`ref`,
+// corner_vertex) and as vertices with snapped window positions (X, Y): as it is when it lies
+// inside every plane (their ClipInfo), else as the fan (0, k, k+1) of its clipped polygon,
+// whose vertices are appended to `clipped` (ShadedVertex). The clipper runs against
+// `planes` (near, far, guard band) in `poly`, the caller's. Every vertex of a clipped
 // polygon carries the flat varyings of the triangle's provoking vertex, so each triangle of
 // its fan has them whichever corner provokes.
+template <int N, class Emit>
+inline void assemble_triangle(uint32_t ia, uint32_t ib, uint32_t ic, const ShadedVertex<N>* post, const ClipInfo* clip, const ClipPlanes& planes,
+                              const Viewport& vp, FlatVaryings flat, std::vector<ShadedVertex<N>>& clipped, ClipPolygon<N>& poly, Emit&& emit) {
+    const ClipInfo &ca = clip[ia], &cb = clip[ib], &cc = clip[ic];
+    if (!ca.finite || !cb.finite || !cc.finite) return;  // NaN or infinite position
+    if (ca.outcode & cb.outcode & cc.outcode) return;     // all outside one plane
+    const unsigned mask = ca.outcode | cb.outcode | cc.outcode;
+    if (mask == 0) return emit(TriangleRef{{ia, ib, ic}}, ca, cb, cc);
+    const ShadedVertex<N>&a = post[ia], &b = post[ib], &c = post[ic];
+    const int n = clip_triangle(clip_vertex(ca, a), clip_vertex(cb, b), clip_vertex(cc, c), planes, mask, poly);
+    const auto first = uint32_t(clipped.size());
+    for (int k = 0; k < n; ++k) {
+        ShadedVertex<N> v;
+        if (!finish_vertex(poly.v[size_t(k)], vp, v)) {  // a degenerate user matrix: the triangle is dropped
+            clipped.resize(first);
+            return;
+        }
+        const ShadedVertex<N>& provoking = flat.first ? a : c;
+        for (size_t j = 0; j < size_t(N); ++j)
+            if ((flat.mask >> j) & 1) v.var[j] = provoking.var[j];
+        clipped.push_back(v);
+    }
+    for (uint32_t k = 1; k + 1 < uint32_t(n); ++k)
+        emit(TriangleRef{{first | kClippedVertex, (first + k) | kClippedVertex, (first + k + 1) | kClippedVertex}}, clipped[first],
+             clipped[first + k], clipped[first + k + 1]);
+}
+
+// Assembles the triangles of `indices` (three per triangle) in order (assemble_triangle).
 template <int N, class Emit>
 void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const ClipPlanes& planes,
                         const Viewport& vp, FlatVaryings flat, std::vector<ShadedVertex<N>>& clipped, Emit&& emit) {
@@ -80,35 +108,7 @@ void assemble_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>
     constexpr size_t kAhead = 3 * 8;
     for (size_t i = 0; i + 2 < indices.size(); i += 3) {
         if (i + kAhead + 2 < indices.size()) __builtin_prefetch(clip + indices[i + kAhead + 1]), __builtin_prefetch(clip + indices[i + kAhead + 2]);
-        const uint32_t ia = indices[i], ib = indices[i + 1], ic = indices[i + 2];
-        const ClipInfo &ca = clip[ia], &cb = clip[ib], &cc = clip[ic];
-        if (!ca.finite || !cb.finite || !cc.finite) continue;  // NaN or infinite position
-        if (ca.outcode & cb.outcode & cc.outcode) continue;     // all outside one plane
-        const unsigned mask = ca.outcode | cb.outcode | cc.outcode;
-        if (mask == 0) {
-            emit(TriangleRef{{ia, ib, ic}}, ca, cb, cc);
-            continue;
-        }
-        const ShadedVertex<N>&a = post[ia], &b = post[ib], &c = post[ic];
-        const int n = clip_triangle(clip_vertex(ca, a), clip_vertex(cb, b), clip_vertex(cc, c), planes, mask, poly);
-        const auto first = uint32_t(clipped.size());
-        int mapped = 0;
-        for (int k = 0; k < n; ++k) {
-            ShadedVertex<N> v;
-            if (!finish_vertex(poly.v[size_t(k)], vp, v)) break;
-            const ShadedVertex<N>& provoking = flat.first ? a : c;
-            for (size_t j = 0; j < size_t(N); ++j)
-                if ((flat.mask >> j) & 1) v.var[j] = provoking.var[j];
-            clipped.push_back(v);
-            ++mapped;
-        }
-        if (mapped != n) {  // a degenerate user matrix: the triangle is dropped
-            clipped.resize(first);
-            continue;
-        }
-        for (uint32_t k = 1; k + 1 < uint32_t(n); ++k)
-            emit(TriangleRef{{first | kClippedVertex, (first + k) | kClippedVertex, (first + k + 1) | kClippedVertex}}, clipped[first],
-                 clipped[first + k], clipped[first + k + 1]);
+        assemble_triangle(indices[i], indices[i + 1], indices[i + 2], post, clip, planes, vp, flat, clipped, poly, emit);
     }
 }
 
