@@ -266,8 +266,9 @@ bool covers_no_center(const V& a, const V& b, const V& c, const Rect& r, const S
 // each takes the same few tests: finite corners, outcodes, winding, bounds, a covered
 // center, its tile. Per triangle those tests are branches in an order a mesh makes hard to
 // predict; here they run on eight triangles at once, in lanes, and only what they decide is
-// done per triangle: nothing, one pending pair, or (clipped, larger than a tile, or its
-// corners far apart) the one-at-a-time path above. The decisions are the same (the
+// done per triangle: nothing, one pending pair, or (for one that crosses a clip plane,
+// reaches more than one tile, or has corners 2^15 subpixels or more apart) the one-at-a-time
+// path above. The decisions are the same (the
 // Binning.EightAtATimeSameAsOneAtATime test).
 
 // Corner k of eight triangles, one per lane: snapped position, outcode, and finiteness in
