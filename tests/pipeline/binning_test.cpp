@@ -285,6 +285,10 @@ TEST(Binning, EightAtATimeSameAsOneAtATime) {
         }
         while (post.size() % 8) post.push_back({}), clip.push_back({});
         for (size_t k = 0; k < post.size(); k += 8) finish_vertices8_generic(&post[k], &clip[k], planes, vp);
+        if (round == 0) {  // a triangle whose area2, 2^31, wraps to INT_MIN in a 32-bit lane (the lanes must not negate it)
+            const int32_t corners[3][2] = {{0, 0}, {1 << 16, 0}, {0, 1 << 15}};
+            for (int k = 0; k < 3; ++k) clip[size_t(k)].X = corners[k][0], clip[size_t(k)].Y = corners[k][1], clip[size_t(k)].outcode = 0, clip[size_t(k)].finite = true;
+        }
         std::vector<uint32_t> indices(size_t(triangles) * 3);
         for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
         for (CullMode cull : {CullMode::None, CullMode::Back, CullMode::Front})

@@ -360,8 +360,8 @@ inline void binning_verdicts8(const Corners8& c, const SampleExtent& s, const Wi
     static_assert(kTileSize == 64);  // (r.x0 >= 0 and r.x1 >= 1 where the bounds are not empty: the shifts are divisions)
     out.tx = rx0 >> 6, out.ty = ry0 >> 6;
     const i8 one_tile = (out.tx == ((rx1 - 1) >> 6)) & (out.ty == ((ry1 - 1) >> 6));
-    const f8 area = simd::to_float(select(area2 < 0, -area2, area2)) * (0.5f / float(kSubpixelOne * kSubpixelOne));
-    const f8 box = simd::to_float((rx1 - rx0) * (ry1 - ry0));
+    const f8 area = simd::to_float(select(area2 < 0, i(0u - u(area2)), area2)) * (0.5f / float(kSubpixelOne * kSubpixelOne));  // (|area2|)
+    const f8 box = simd::to_float(i(u(rx1 - rx0) * u(ry1 - ry0)));
     out.area = select(area < box, area, box);  // (std::min(box, area))
     const i8 drop = ~finite | outside_one | (~clipped & near & (~survives | empty | no_center | off_picture));
     const i8 alone = ~drop & (clipped | ~near | ~one_tile);
