@@ -98,7 +98,7 @@ void expect_group_coverage_matches() {
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> u(0, 1);
     const Rect tile{64, 128, 128, 192};
-    int small = 0, big = 0;
+    int small = 0, big = 0, blocks = 0;
     for (int k = 0; k < 4000; ++k) {
         const bool huge = k % 4 == 3;  // (edges far past the tile, and past kSmallEdge)
         const float cx = 50 + 90 * u(rng), cy = 115 + 90 * u(rng), size = huge ? 64 + 2000 * u(rng) : 1 + 63 * u(rng) * u(rng);
@@ -118,9 +118,25 @@ void expect_group_coverage_matches() {
         auto lanes = [](const TriangleEdges& e, auto&& on_group) { rasterize_small<Samples>(e, on_group); };
         ASSERT_EQ(expected, group_coverage<Samples>(t, tile, lanes)) << "32-bit lanes, triangle " << k;
         ++small;
+        const int bw = t.bounds.x1 - t.bounds.x0;
+        if (Samples != 1 || bw > kBlockColumns) continue;
+        // Blocks of 4x2, from the bounds' first pixel or left of it (as far as the block
+        // still reaches the bounds' last column) and one row above (as the queue starts them
+        // nearer a tile's far edges).
+        const int dx = k % (kBlockColumns - bw + 1), dy = (k / 4) % 2;
+        std::vector<unsigned> got(64 * 64, 0);
+        rasterize_blocks(t, t.bounds.x0 - dx, t.bounds.y0 - dy, [&](int x, int y, simd::i8 covered) {
+            for (int l = 0; l < simd::kLanes; ++l)
+                if (covered[l]) got[size_t((y + l / 4 - tile.y0) * 64 + x + l % 4 - tile.x0)] |= 1u;
+        });
+        ASSERT_EQ(expected, got) << "blocks, triangle " << k << " from (" << -dx << ", " << -dy << ")";
+        ++blocks;
     }
     EXPECT_GT(small, 500);
     EXPECT_GT(big - small, 300);
+    if (Samples == 1) {
+        EXPECT_GT(blocks, 100);
+    }
 }
 
 TEST(GroupRasterization, SameCoverageAs64BitEdgesSingleSample) { expect_group_coverage_matches<1>(); }

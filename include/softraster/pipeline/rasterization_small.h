@@ -95,6 +95,38 @@ void rasterize_small(const TriangleEdges& t, OnGroup&& on_group) {
     }
 }
 
+// Single-sampled, for a triangle at most four pixels wide: blocks of four columns by two
+// rows, a block a vector (lane l: column l % 4, row l / 4). A triangle of a few pixels then
+// costs one or two coverage tests, depth tests and queued groups, where a row at a time
+// costs one per row, each with a lane or two in use. Calls on_block(x, y, covered) for each
+// block [x, x + 4) x [y, y + 2) that covers a pixel center, from (x, y) down past the bounds'
+// last row. (x, y) is the caller's to choose: at most three columns left of the bounds and
+// one row above them, so that the 32-bit argument above holds. Needs has_small_edges(t).
+inline constexpr int kBlockColumns = 4, kBlockRows = 2;
+inline const simd::i8 kBlockColumn = {0, 1, 2, 3, 0, 1, 2, 3}, kBlockRow = {0, 0, 0, 0, 1, 1, 1, 1};
+
+template <class OnBlock>
+void rasterize_blocks(const TriangleEdges& t, int x, int y, OnBlock&& on_block) {
+    using namespace simd;
+    const Rect& r = t.bounds;
+    const i8 px = kBlockColumn + x;
+    const i8 in_x = (px >= r.x0) & (px < r.x1);
+    std::array<i8, 3> e;
+    std::array<int32_t, 3> step_y;
+    for (size_t i = 0; i < 3; ++i) {
+        const auto e0 = int32_t(t.edge(int(i), int64_t(x) * kSubpixelOne32 + 128, int64_t(y) * kSubpixelOne32 + 128) + t.bias[i]);
+        const auto a = int32_t(t.A[i]), b = int32_t(t.B[i]);
+        e[i] = e0 + a * kSubpixelOne32 * kBlockColumn + b * kSubpixelOne32 * kBlockRow;
+        step_y[i] = b * kSubpixelOne32 * kBlockRows;
+    }
+    for (; y < r.y1; y += kBlockRows) {
+        const i8 py = kBlockRow + y;
+        const i8 covered = in_x & (py >= r.y0) & (py < r.y1) & ((e[0] | e[1] | e[2]) >= 0);
+        if (any(covered)) on_block(x, y, covered);
+        for (size_t i = 0; i < 3; ++i) e[i] += step_y[i];
+    }
+}
+
 // The same calls for a triangle of any size: each row's coverage from the exact span of
 // pixels inside all three edges at each sample position (SampleRows, 64-bit, as
 // rasterize_triangle finds them), turned into lane masks by comparing each lane's pixel with

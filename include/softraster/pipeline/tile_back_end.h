@@ -95,7 +95,7 @@ struct TileBackEnd {
                             return;
                         }
                     }
-                    shaded += queue_triangle(setup, queue);  // makes the planes if needed
+                    shaded += queue_triangle(setup, rect, queue);  // makes the planes if needed
                 });
                 queue.flush();
                 return shaded;
@@ -327,7 +327,7 @@ struct TileBackEnd {
     // fragments that pass; returns the number queued. Coverage comes eight pixels at a time
     // (rasterization_small.h): a small triangle's in 32-bit lanes, a bigger one's with MSAA
     // from each row's spans.
-    uint64_t queue_triangle(TriangleSetup<N>& t, FragmentQueue<N, Samples>& queue) const requires(kQueueable) {
+    uint64_t queue_triangle(TriangleSetup<N>& t, const Rect& rect, FragmentQueue<N, Samples>& queue) const requires(kQueueable) {
         using namespace simd;
         const int width = fb.width();
         uint64_t queued = 0;
@@ -351,11 +351,30 @@ struct TileBackEnd {
                 const i8 pass = test_group(depth_row(y), x, width, z, covered, t.front_facing);
                 if (any(pass)) queue_group(y, x, pass, splat_i(1));
             };
-            // A triangle of a few narrow rows: a group's coverage at once in 32-bit lanes
-            // beats walking each row pixel by pixel; the smallest, of one to five pixels,
-            // are quicker walked (docs/performance.md).
+            // A triangle up to four pixels wide and eight tall (most of a fine mesh's): its
+            // pixels in blocks of 4x2, a block's coverage, depth test and queued group at
+            // once. The blocks lie inside the tile, whose pixels are this thread's: a block's
+            // lanes outside the triangle have their depth read and written back unchanged.
+            // (Not with stencil, whose test_group reads and writes rows of eight.) A triangle
+            // of a few narrow rows: a group's coverage at once in 32-bit lanes beats walking
+            // each row pixel by pixel; the smallest left, of one to five pixels, are quicker
+            // walked (docs/performance.md).
             const int bw = t.bounds.x1 - t.bounds.x0, bh = t.bounds.y1 - t.bounds.y0;
-            if (bw <= kNarrow && bw * bh >= 6 && has_small_edges(t)) {
+            const int block_rows = (bh + kBlockRows - 1) / kBlockRows * kBlockRows;
+            if (bw <= kBlockColumns && bh <= 4 * kBlockRows && !stencil() && rect.x1 - rect.x0 >= kBlockColumns &&
+                rect.y1 - rect.y0 >= block_rows && has_small_edges(t)) {
+                const int x = std::min(t.bounds.x0, rect.x1 - kBlockColumns), y = std::min(t.bounds.y0, rect.y1 - block_rows);
+                rasterize_blocks(t, x, y, [&](int bx, int by, i8 covered) {
+                    need_planes();
+                    const f8 i = to_float(kBlockColumn) + float(bx - t.origin_x), j = to_float(kBlockRow) + float(by - t.origin_y);
+                    const f8 z = interpolate_depth(t, i, j);
+                    const size_t at = fb.sample_index(bx, by);
+                    const i8 pass = tests.depth.test_block(fb.depth_plane() + at, width, z, covered);
+                    if (!any(pass)) return;
+                    queued += unsigned(__builtin_popcount(bits(pass)));
+                    queue.push(pass, z, interpolate_varyings<L>(t, i, j), splat_i(int32_t(at)) + kBlockColumn + kBlockRow * width, splat_i(1));
+                });
+            } else if (bw <= kNarrow && bw * bh >= 6 && has_small_edges(t)) {
                 rasterize_small<1>(t, [&](int y, int x, const std::array<i8, 1>& covered) { test(y, x, covered[0]); });
             } else {
                 rasterize_spans(t, t.bounds, [&](int y, int x_begin, int x_end) {
