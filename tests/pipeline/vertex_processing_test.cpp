@@ -19,6 +19,69 @@ using test::ConstantColorShader;
 
 namespace {
 
+struct Counts {
+    int inside = 0, outside = 0, unmapped = 0, nonfinite = 0;
+};
+
+// Processes `in` on the generic path or the AVX2 one and checks every vertex against the
+// one-vertex helpers.
+Counts expect_same_as_one_at_a_time(const std::vector<ClipVertexIn>& in, const Viewport& vp, bool wide) {
+    const ClipPlanes planes = ClipPlanes::for_viewport(vp.width, vp.height);
+    std::vector<ShadedVertex<1>> out(in.size());
+    std::vector<ClipInfo> clip(in.size());
+    if (wide) {
+        process_vertices<true>(ConstantColorShader{}, std::span<const ClipVertexIn>(in), 0, in.size(), planes, vp, std::span<ShadedVertex<1>>(out),
+                               std::span<ClipInfo>(clip));
+    } else {
+        process_vertices(ConstantColorShader{}, std::span<const ClipVertexIn>(in), 0, in.size(), planes, vp, std::span<ShadedVertex<1>>(out),
+                         std::span<ClipInfo>(clip));
+    }
+    Counts n;
+    for (size_t i = 0; i < in.size(); ++i) {
+        SCOPED_TRACE(testing::Message() << "vertex " << i << (wide ? ", AVX2 path" : ", generic path"));
+        const glm::vec4 p = in[i].clip;
+        const ShadedVertex<1>& o = out[i];
+        const ClipInfo& c = clip[i];
+        EXPECT_EQ(std::bit_cast<glm::uvec4>(c.position), std::bit_cast<glm::uvec4>(p));
+        EXPECT_EQ(o.var[0], float(i));
+        const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+        if (!finite) {
+            EXPECT_FALSE(c.finite);
+            ++n.nonfinite;
+            continue;
+        }
+        EXPECT_EQ(c.outcode, planes.outcode(p));
+        if (c.outcode != 0) {
+            EXPECT_TRUE(c.finite);
+            ++n.outside;
+            continue;
+        }
+        WindowPosition wp;
+        const bool mapped = to_window(p, vp, wp);
+        EXPECT_EQ(c.finite, mapped);
+        if (!mapped) {
+            ++n.unmapped;
+            continue;
+        }
+        EXPECT_EQ(std::bit_cast<uint32_t>(o.window.x), std::bit_cast<uint32_t>(wp.x));
+        EXPECT_EQ(std::bit_cast<uint32_t>(o.window.y), std::bit_cast<uint32_t>(wp.y));
+        EXPECT_EQ(std::bit_cast<uint32_t>(o.window.z), std::bit_cast<uint32_t>(wp.z));
+        EXPECT_EQ(std::bit_cast<uint32_t>(o.window.inv_w), std::bit_cast<uint32_t>(wp.inv_w));
+        EXPECT_EQ(o.X, snap_to_subpixel(wp.x));
+        EXPECT_EQ(o.Y, snap_to_subpixel(wp.y));
+        EXPECT_EQ(c.X, o.X);  // (binning reads them from the clip part)
+        EXPECT_EQ(c.Y, o.Y);
+        ++n.inside;
+    }
+    return n;
+}
+
+// Both CPU paths (the AVX2 one where it runs).
+std::vector<bool> paths() {
+    if (simd::wide_path_runs()) return {false, true};
+    return {false};
+}
+
 TEST(VertexProcessing, EightAtATimeSameAsOneAtATime) {
     std::mt19937 rng(9);
     std::uniform_real_distribution<float> u(-1, 1);
@@ -33,53 +96,25 @@ TEST(VertexProcessing, EightAtATimeSameAsOneAtATime) {
     }
     in[1].clip = glm::vec4(0.0f);  // inside every plane (on all of them), but w = 0: not mappable
     in[2].clip = glm::vec4(0.0f, 0.0f, 0.0f, -0.0f);
-    const Viewport vp{317, 211};
-    const ClipPlanes planes = ClipPlanes::for_viewport(vp.width, vp.height);
-    std::vector<ShadedVertex<1>> out(in.size());
-    std::vector<ClipInfo> clip(in.size());
-    process_vertices(ConstantColorShader{}, std::span<const ClipVertexIn>(in), 0, in.size(), planes, vp, std::span<ShadedVertex<1>>(out),
-                     std::span<ClipInfo>(clip));
-
-    int inside = 0, outside = 0, unmapped = 0, nonfinite = 0;
-    for (size_t i = 0; i < in.size(); ++i) {
-        const glm::vec4 p = in[i].clip;
-        const ShadedVertex<1>& o = out[i];
-        const ClipInfo& c = clip[i];
-        ASSERT_EQ(std::bit_cast<glm::uvec4>(c.position), std::bit_cast<glm::uvec4>(p)) << i;
-        ASSERT_EQ(o.var[0], float(i));
-        const bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
-        if (!finite) {
-            ASSERT_FALSE(c.finite) << i;
-            ++nonfinite;
-            continue;
-        }
-        ASSERT_EQ(c.outcode, planes.outcode(p)) << i;
-        if (c.outcode != 0) {
-            ASSERT_TRUE(c.finite) << i;
-            ++outside;
-            continue;
-        }
-        WindowPosition wp;
-        const bool mapped = to_window(p, vp, wp);
-        ASSERT_EQ(c.finite, mapped) << i;
-        if (!mapped) {
-            ++unmapped;
-            continue;
-        }
-        ASSERT_EQ(std::bit_cast<uint32_t>(o.window.x), std::bit_cast<uint32_t>(wp.x)) << i;
-        ASSERT_EQ(std::bit_cast<uint32_t>(o.window.y), std::bit_cast<uint32_t>(wp.y)) << i;
-        ASSERT_EQ(std::bit_cast<uint32_t>(o.window.z), std::bit_cast<uint32_t>(wp.z)) << i;
-        ASSERT_EQ(std::bit_cast<uint32_t>(o.window.inv_w), std::bit_cast<uint32_t>(wp.inv_w)) << i;
-        ASSERT_EQ(o.X, snap_to_subpixel(wp.x)) << i;
-        ASSERT_EQ(o.Y, snap_to_subpixel(wp.y)) << i;
-        ASSERT_EQ(c.X, o.X) << i;  // (binning reads them from the clip part)
-        ASSERT_EQ(c.Y, o.Y) << i;
-        ++inside;
+    for (bool wide : paths()) {
+        const Counts n = expect_same_as_one_at_a_time(in, Viewport{317, 211}, wide);
+        EXPECT_GT(n.inside, 300);
+        EXPECT_GT(n.outside, 200);
+        EXPECT_GT(n.nonfinite, 20);
+        EXPECT_EQ(n.unmapped, 2);
     }
-    EXPECT_GT(inside, 300);
-    EXPECT_GT(outside, 200);
-    EXPECT_GT(nonfinite, 20);
-    EXPECT_EQ(unmapped, 2);
+}
+
+// Window positions exactly halfway between two 1/256 steps snap to the even one on both
+// paths, as lrint does: in a 256 x 256 viewport, x = (2n + 1) / 2^16 - 1 (exact in float)
+// maps to 256 x_window = n + 1/2.
+TEST(VertexProcessing, SnappingRoundsHalfwayToEven) {
+    std::vector<ClipVertexIn> in(96);
+    for (size_t i = 0; i < in.size(); ++i) {
+        const float x = float(2 * (i * 611 % 65536) + 1) / 65536.0f - 1.0f, y = float(2 * i + 1) / 65536.0f - 1.0f;
+        in[i] = {glm::vec4(x, -y, 0.0f, 1.0f), float(i)};
+    }
+    for (bool wide : paths()) EXPECT_EQ(expect_same_as_one_at_a_time(in, Viewport{256, 256}, wide).inside, 96);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // mapping, and the snapping of its window position to 24.8 fixed point.
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -16,6 +17,10 @@
 #include "softraster/pipeline/shader.h"
 #include "softraster/pipeline/simd.h"
 #include "softraster/pipeline/viewport.h"
+
+#if SOFTRASTER_HAS_AVX2_PATH
+#include <immintrin.h>
+#endif
 
 namespace softraster {
 
@@ -64,19 +69,21 @@ bool finish_vertex(const ClipVertex<N>& c, const Viewport& vp, ShadedVertex<N>& 
     return map_to_window(c.position, vp, out);
 }
 
-// The fixed-function part of vertex processing for eight shaded vertices at once (their
-// clip positions set): finiteness, clip outcode, perspective divide and viewport mapping,
+// The fixed-function part of vertex processing for eight vertices, their clip positions
+// x, y, z, w as lanes: finiteness, clip outcode, perspective divide and viewport mapping,
 // each lane computed by the helpers ClipPlanes::outcode and to_window use (dot4,
 // window_coordinates), so the results are the same bits as one vertex at a time (no
 // contraction: CMakeLists.txt).
-template <int N>
-void finish_vertices8(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
+struct Finished8 {
+    simd::i8 finite;   // ClipInfo::finite: all clip coordinates finite, and, inside, mapped
+    simd::i8 outcode;  // ClipInfo::outcode
+    simd::i8 valid;    // finite and inside: the window position is valid
+    simd::f8 wx, wy, wz, inv_w;
+};
+// (Vectors by reference: see lanes::gather in texture_lanes.h.)
+inline void finish8(const simd::f8& x, const simd::f8& y, const simd::f8& z, const simd::f8& w, const ClipPlanes& planes, const Viewport& vp,
+                    Finished8& out) {
     using namespace simd;
-    f8 x, y, z, w;
-    for (int l = 0; l < kLanes; ++l) {
-        const glm::vec4& p = clip[l].position;
-        x[l] = p.x, y[l] = p.y, z[l] = p.z, w[l] = p.w;
-    }
     // |v| <= FLT_MAX: false for infinities and NaN, as !std::isfinite
     auto finite = [](f8 v) { return select(v < 0.0f, -v, v) <= std::numeric_limits<float>::max(); };
     const i8 in_range = finite(x) & finite(y) & finite(z) & finite(w);
@@ -88,28 +95,87 @@ void finish_vertices8(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& pl
     }
     const auto [wx, wy, wz, inv_w] = window_coordinates(x, y, z, w, vp);
     const i8 mapped = (w > 0.0f) & finite(wx) & finite(wy) & finite(wz) & finite(inv_w);
+    // (A vertex outside is finite whether or not it maps; one inside that cannot be mapped is not.)
+    const i8 finite_out = in_range & ((outcode != 0) | mapped);
+    out = {finite_out, outcode, finite_out & (outcode == 0), wx, wy, wz, inv_w};
+}
+
+// Eight vertices at once (their clip positions set), lane by lane into their two parts.
+template <int N>
+void finish_vertices8(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
+    using namespace simd;
+    f8 x, y, z, w;
+    for (int l = 0; l < kLanes; ++l) {
+        const glm::vec4& p = clip[l].position;
+        x[l] = p.x, y[l] = p.y, z[l] = p.z, w[l] = p.w;
+    }
+    Finished8 f;
+    finish8(x, y, z, w, planes, vp, f);
     for (int l = 0; l < kLanes; ++l) {
         ShadedVertex<N>& o = out[l];
         ClipInfo& c = clip[l];
-        c.finite = in_range[l] != 0;
-        c.outcode = unsigned(outcode[l]);
-        if (!c.finite || c.outcode != 0) continue;
-        if (!mapped[l]) {
-            c.finite = false;
-            continue;
-        }
-        o.window = {wx[l], wy[l], wz[l], inv_w[l]};
-        o.X = c.X = int32_t(snap_to_subpixel(wx[l]));
-        o.Y = c.Y = int32_t(snap_to_subpixel(wy[l]));
+        c.finite = f.finite[l] != 0;
+        c.outcode = unsigned(f.outcode[l]);
+        if (!f.valid[l]) continue;
+        o.window = {f.wx[l], f.wy[l], f.wz[l], f.inv_w[l]};
+        o.X = c.X = int32_t(snap_to_subpixel(f.wx[l]));
+        o.Y = c.Y = int32_t(snap_to_subpixel(f.wy[l]));
     }
 }
+#if SOFTRASTER_HAS_AVX2_PATH
+// The same with the clip positions read as eight 16-byte rows and the results written as
+// rows, each set of four turned from lanes to rows and back by a 4x4 transpose in each
+// 128-bit half (lanes k and k + 4 share a register), with no branch per vertex: the
+// positions, window coordinates and snapped positions of the vertices that are not valid
+// are written too, which their readers never look at ("valid when the outcode is 0").
+// Snapping: v 256 is exact in float, and cvtps2dq rounds it to nearest even as lrint does.
+[[gnu::target("avx2")]] inline void transpose4x4_halves(__m256 (&r)[4]) {
+    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
+    const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+    r[0] = _mm256_shuffle_ps(t0, t2, 0x44), r[1] = _mm256_shuffle_ps(t0, t2, 0xee);
+    r[2] = _mm256_shuffle_ps(t1, t3, 0x44), r[3] = _mm256_shuffle_ps(t1, t3, 0xee);
+}
+template <int N>
+[[gnu::target("avx2")]] inline void finish_vertices8_avx2(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
+    static_assert(offsetof(ClipInfo, X) == 16 && offsetof(ClipInfo, outcode) == 24 && offsetof(ClipInfo, finite) == 28 && sizeof(ClipInfo) == 32);
+    static_assert(offsetof(ShadedVertex<N>, window) == 8 && sizeof(WindowPosition) == 16);
+    __m256 r[4];
+    for (int k = 0; k < 4; ++k)
+        r[k] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(&clip[k].position.x)), _mm_loadu_ps(&clip[k + 4].position.x), 1);
+    transpose4x4_halves(r);
+    const simd::f8 x = simd::f8(r[0]), y = simd::f8(r[1]), z = simd::f8(r[2]), w = simd::f8(r[3]);
+    Finished8 f;
+    finish8(x, y, z, w, planes, vp, f);
+    const __m256 sub = _mm256_set1_ps(float(kSubpixelOne));
+    const __m256i valid = __m256i(f.valid);
+    const __m256i X = _mm256_and_si256(_mm256_cvtps_epi32(_mm256_mul_ps(__m256(f.wx), sub)), valid);
+    const __m256i Y = _mm256_and_si256(_mm256_cvtps_epi32(_mm256_mul_ps(__m256(f.wy), sub)), valid);
+    __m256 window[4] = {__m256(f.wx), __m256(f.wy), __m256(f.wz), __m256(f.inv_w)};
+    __m256 tail[4] = {_mm256_castsi256_ps(X), _mm256_castsi256_ps(Y), _mm256_castsi256_ps(__m256i(f.outcode)),
+                      _mm256_castsi256_ps(_mm256_and_si256(__m256i(f.finite), _mm256_set1_epi32(1)))};  // (finite: a bool, then padding)
+    transpose4x4_halves(window);
+    transpose4x4_halves(tail);
+    for (int k = 0; k < 4; ++k)  // vertices k (low halves) and k + 4 (high halves)
+        for (int h = 0; h < 2; ++h) {
+            const int l = k + 4 * h;
+            const __m128 t = h ? _mm256_extractf128_ps(tail[k], 1) : _mm256_castps256_ps128(tail[k]);
+            _mm_storeu_ps(reinterpret_cast<float*>(&clip[l].X), t);
+            _mm_storel_pi(reinterpret_cast<__m64*>(&out[l].X), t);
+            _mm_storeu_ps(&out[l].window.x, h ? _mm256_extractf128_ps(window[k], 1) : _mm256_castps256_ps128(window[k]));
+        }
+}
+#endif
 
 // The same out of line, in each CPU path's copy (simd.h): it depends on the varying count
 // alone, so it is compiled once per count (src/scene/surface_phases.cpp), not again with
 // every shader; a call per eight vertices costs nothing that shows.
 template <int N>
 [[gnu::noinline]] SOFTRASTER_AVX2_TARGET void finish_vertices8_wide(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
+#if SOFTRASTER_HAS_AVX2_PATH
+    finish_vertices8_avx2(out, clip, planes, vp);
+#else
     finish_vertices8(out, clip, planes, vp);
+#endif
 }
 template <int N>
 [[gnu::noinline]] void finish_vertices8_generic(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
