@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "softraster/shading/texture.h"
+#include "softraster/pipeline/simd_avx2.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -143,8 +144,8 @@ inline void load_footprints(const uint32_t* p, const i8& index, i8 (&texel)[4]) 
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 // Two 8-byte loads per lane, (a, b) and (c, d), make its footprint in one 16-byte register;
-// lanes k and k + 4 share a 32-byte one, and a 4x4 transpose in each half turns the four
-// into the footprint's texels across the lanes: far cheaper here than four gathers.
+// lanes k and k + 4 share a 32-byte one, and simd::transpose4x4_halves turns the four into
+// the footprint's texels across the lanes: far cheaper here than four gathers.
 template <>
 [[gnu::target("avx2")]] inline void load_footprints<true>(const uint32_t* p, const i8& index, i8 (&texel)[4]) {
     alignas(32) uint32_t at[simd::kLanes];  // (unsigned: no sign extension per lane)
@@ -156,10 +157,8 @@ template <>
     };
     __m256i y[4];
     for (int k = 0; k < 4; ++k) y[k] = _mm256_inserti128_si256(_mm256_castsi128_si256(lane(k)), lane(k + 4), 1);
-    const __m256i ab01 = _mm256_unpacklo_epi32(y[0], y[1]), cd01 = _mm256_unpackhi_epi32(y[0], y[1]);
-    const __m256i ab23 = _mm256_unpacklo_epi32(y[2], y[3]), cd23 = _mm256_unpackhi_epi32(y[2], y[3]);
-    texel[0] = i8(_mm256_unpacklo_epi64(ab01, ab23)), texel[1] = i8(_mm256_unpackhi_epi64(ab01, ab23));
-    texel[2] = i8(_mm256_unpacklo_epi64(cd01, cd23)), texel[3] = i8(_mm256_unpackhi_epi64(cd01, cd23));
+    simd::transpose4x4_halves(y);
+    for (int k = 0; k < 4; ++k) texel[k] = i8(y[k]);
 }
 #endif
 

@@ -27,6 +27,7 @@
 #include "softraster/pipeline/primitive_assembly.h"
 #include "softraster/pipeline/sample_pattern.h"
 #include "softraster/pipeline/simd.h"
+#include "softraster/pipeline/simd_avx2.h"
 #include "softraster/pipeline/vertex_processing.h"
 
 #if SOFTRASTER_HAS_AVX2_PATH
@@ -285,8 +286,8 @@ inline void load_corners8(const uint32_t* indices, const ClipInfo* clip, Corners
         }
 }
 #if SOFTRASTER_HAS_AVX2_PATH
-// The 16 bytes from X on of each corner, triangles t and t + 4 in one register, then a 4x4
-// transpose in each half (as load_footprints): 24 loads and 12 shuffles for 96 fields.
+// The 16 bytes from X on of each corner, triangles t and t + 4 in one register, then
+// simd::transpose4x4_halves: 24 loads and 12 shuffles for 96 fields.
 template <>
 [[gnu::target("avx2")]] inline void load_corners8<true>(const uint32_t* indices, const ClipInfo* clip, Corners8& out) {
     static_assert(sizeof(ClipInfo) == 32 && offsetof(ClipInfo, X) == 16 && offsetof(ClipInfo, Y) == 20 && offsetof(ClipInfo, outcode) == 24 &&
@@ -298,10 +299,8 @@ template <>
             const auto* high = reinterpret_cast<const __m128i*>(&clip[indices[3 * (t + 4) + k]].X);
             r[t] = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_loadu_si128(low)), _mm_loadu_si128(high), 1);
         }
-        const __m256i xy01 = _mm256_unpacklo_epi32(r[0], r[1]), of01 = _mm256_unpackhi_epi32(r[0], r[1]);
-        const __m256i xy23 = _mm256_unpacklo_epi32(r[2], r[3]), of23 = _mm256_unpackhi_epi32(r[2], r[3]);
-        out.X[k] = simd::i8(_mm256_unpacklo_epi64(xy01, xy23)), out.Y[k] = simd::i8(_mm256_unpackhi_epi64(xy01, xy23));
-        out.outcode[k] = simd::i8(_mm256_unpacklo_epi64(of01, of23)), out.finite[k] = simd::i8(_mm256_unpackhi_epi64(of01, of23));
+        simd::transpose4x4_halves(r);
+        out.X[k] = simd::i8(r[0]), out.Y[k] = simd::i8(r[1]), out.outcode[k] = simd::i8(r[2]), out.finite[k] = simd::i8(r[3]);
     }
 }
 #endif

@@ -16,11 +16,8 @@
 #include "softraster/pipeline/clipping.h"
 #include "softraster/pipeline/shader.h"
 #include "softraster/pipeline/simd.h"
+#include "softraster/pipeline/simd_avx2.h"
 #include "softraster/pipeline/viewport.h"
-
-#if SOFTRASTER_HAS_AVX2_PATH
-#include <immintrin.h>
-#endif
 
 namespace softraster {
 
@@ -124,44 +121,39 @@ void finish_vertices8(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& pl
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 // The same with the clip positions read as eight 16-byte rows and the results written as
-// rows, each set of four turned from lanes to rows and back by a 4x4 transpose in each
-// 128-bit half (lanes k and k + 4 share a register), with no branch per vertex: the
+// rows, each set of four turned from rows to lanes and back by simd::transpose4x4_halves,
+// with no branch per vertex: the
 // positions, window coordinates and snapped positions of the vertices that are not valid
 // are written too, which their readers never look at ("valid when the outcode is 0").
 // Snapping: v 256 is exact in float, and cvtps2dq rounds it to nearest even as lrint does.
-[[gnu::target("avx2")]] inline void transpose4x4_halves(__m256 (&r)[4]) {
-    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
-    const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-    r[0] = _mm256_shuffle_ps(t0, t2, 0x44), r[1] = _mm256_shuffle_ps(t0, t2, 0xee);
-    r[2] = _mm256_shuffle_ps(t1, t3, 0x44), r[3] = _mm256_shuffle_ps(t1, t3, 0xee);
-}
 template <int N>
 [[gnu::target("avx2")]] inline void finish_vertices8_avx2(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
     static_assert(offsetof(ClipInfo, X) == 16 && offsetof(ClipInfo, outcode) == 24 && offsetof(ClipInfo, finite) == 28 && sizeof(ClipInfo) == 32);
     static_assert(offsetof(ShadedVertex<N>, window) == 8 && sizeof(WindowPosition) == 16);
-    __m256 r[4];
+    __m256i r[4];
     for (int k = 0; k < 4; ++k)
-        r[k] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(&clip[k].position.x)), _mm_loadu_ps(&clip[k + 4].position.x), 1);
-    transpose4x4_halves(r);
-    const simd::f8 x = simd::f8(r[0]), y = simd::f8(r[1]), z = simd::f8(r[2]), w = simd::f8(r[3]);
+        r[k] = _mm256_castps_si256(_mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(&clip[k].position.x)), _mm_loadu_ps(&clip[k + 4].position.x), 1));
+    simd::transpose4x4_halves(r);
+    const simd::f8 x = simd::f8(_mm256_castsi256_ps(r[0])), y = simd::f8(_mm256_castsi256_ps(r[1])), z = simd::f8(_mm256_castsi256_ps(r[2])),
+                   w = simd::f8(_mm256_castsi256_ps(r[3]));
     Finished8 f;
     finish8(x, y, z, w, planes, vp, f);
     const __m256 sub = _mm256_set1_ps(float(kSubpixelOne));
     const __m256i valid = __m256i(f.valid);
     const __m256i X = _mm256_and_si256(_mm256_cvtps_epi32(_mm256_mul_ps(__m256(f.wx), sub)), valid);
     const __m256i Y = _mm256_and_si256(_mm256_cvtps_epi32(_mm256_mul_ps(__m256(f.wy), sub)), valid);
-    __m256 window[4] = {__m256(f.wx), __m256(f.wy), __m256(f.wz), __m256(f.inv_w)};
-    __m256 tail[4] = {_mm256_castsi256_ps(X), _mm256_castsi256_ps(Y), _mm256_castsi256_ps(__m256i(f.outcode)),
-                      _mm256_castsi256_ps(_mm256_and_si256(__m256i(f.finite), _mm256_set1_epi32(1)))};  // (finite: a bool, then padding)
-    transpose4x4_halves(window);
-    transpose4x4_halves(tail);
+    __m256i window[4] = {_mm256_castps_si256(__m256(f.wx)), _mm256_castps_si256(__m256(f.wy)), _mm256_castps_si256(__m256(f.wz)),
+                         _mm256_castps_si256(__m256(f.inv_w))};
+    __m256i tail[4] = {X, Y, __m256i(f.outcode), _mm256_and_si256(__m256i(f.finite), _mm256_set1_epi32(1))};  // (finite: a bool, then padding)
+    simd::transpose4x4_halves(window);
+    simd::transpose4x4_halves(tail);
     for (int k = 0; k < 4; ++k)  // vertices k (low halves) and k + 4 (high halves)
         for (int h = 0; h < 2; ++h) {
             const int l = k + 4 * h;
-            const __m128 t = h ? _mm256_extractf128_ps(tail[k], 1) : _mm256_castps256_ps128(tail[k]);
-            _mm_storeu_ps(reinterpret_cast<float*>(&clip[l].X), t);
-            _mm_storel_pi(reinterpret_cast<__m64*>(&out[l].X), t);
-            _mm_storeu_ps(&out[l].window.x, h ? _mm256_extractf128_ps(window[k], 1) : _mm256_castps256_ps128(window[k]));
+            const __m128i t = h ? _mm256_extracti128_si256(tail[k], 1) : _mm256_castsi256_si128(tail[k]);
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(&clip[l].X), t);
+            _mm_storel_epi64(reinterpret_cast<__m128i*>(&out[l].X), t);
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(&out[l].window), h ? _mm256_extracti128_si256(window[k], 1) : _mm256_castsi256_si128(window[k]));
         }
 }
 #endif
