@@ -29,6 +29,12 @@ inline bool has_small_edges(const TriangleEdges& t) {
     return true;
 }
 
+// Edge i's value plus its fill-rule bias at the center of pixel (x, y), where the argument
+// above puts it in 32 bits: the start of a small triangle's lanes.
+inline int32_t edge_at_center32(const TriangleEdges& t, size_t i, int x, int y) {
+    return int32_t(t.edge(int(i), int64_t(x) * kSubpixelOne32 + 128, int64_t(y) * kSubpixelOne32 + 128) + t.bias[i]);
+}
+
 // Per-lane offsets, in 1/256 pixel from the center of a group's first pixel, of the points a
 // group covers: one sample per pixel, eight pixels; or with 4x MSAA four vectors in the
 // framebuffer's order (vector v: pixels 2v and 2v + 1, samples 0-3 of each).
@@ -69,7 +75,7 @@ void rasterize_small(const TriangleEdges& t, OnGroup&& on_group) {
     std::array<std::array<i8, 3>, V> row;
     std::array<int32_t, 3> step_x, step_y;
     for (size_t i = 0; i < 3; ++i) {
-        const auto e = int32_t(t.edge(int(i), int64_t(gx0) * kSubpixelOne32 + 128, int64_t(r.y0) * kSubpixelOne32 + 128) + t.bias[i]);
+        const int32_t e = edge_at_center32(t, i, gx0, r.y0);
         const auto a = int32_t(t.A[i]), b = int32_t(t.B[i]);
         for (int v = 0; v < V; ++v) row[size_t(v)][i] = e + a * G::dx(v) + b * G::dy(v);
         step_x[i] = a * kSubpixelOne32 * kLanes;
@@ -114,9 +120,8 @@ void rasterize_blocks(const TriangleEdges& t, int x, int y, OnBlock&& on_block) 
     std::array<i8, 3> e;
     std::array<int32_t, 3> step_y;
     for (size_t i = 0; i < 3; ++i) {
-        const auto e0 = int32_t(t.edge(int(i), int64_t(x) * kSubpixelOne32 + 128, int64_t(y) * kSubpixelOne32 + 128) + t.bias[i]);
         const auto a = int32_t(t.A[i]), b = int32_t(t.B[i]);
-        e[i] = e0 + a * kSubpixelOne32 * kBlockColumn + b * kSubpixelOne32 * kBlockRow;
+        e[i] = edge_at_center32(t, i, x, y) + a * kSubpixelOne32 * kBlockColumn + b * kSubpixelOne32 * kBlockRow;
         step_y[i] = b * kSubpixelOne32 * kBlockRows;
     }
     for (; y < r.y1; y += kBlockRows) {
