@@ -337,19 +337,25 @@ struct TileBackEnd {
         auto need_planes = [&] {
             if (!t.has_planes) setup_planes<Flat>(t);
         };
-        // Queues the pixels of group [x, x + 8) of row y set in `pass`, writing `samples` of each.
-        auto queue_group = [&](int y, int x, i8 pass, i8 samples) {
-            const f8 i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
+        // Queues the lanes of `pass`: pixels at (i, j) from the planes' origin, window depths z,
+        // index of each pixel's first sample, the samples each writes.
+        auto queue_lanes = [&](i8 pass, const f8& i, const f8& j, const f8& z, i8 pixel, i8 samples) {
             queued += unsigned(__builtin_popcount(bits(pass)));
-            const i8 pixel = (splat_i(int32_t(fb.sample_index(0, y))) + (kLaneIndex + x) * Samples);
-            queue.push(pass, interpolate_depth(t, i, j), interpolate_varyings<L>(t, i, j), pixel, samples);
+            queue.push(pass, z, interpolate_varyings<L>(t, i, j), pixel, samples);
+        };
+        // The pixels of group [x, x + 8) of row y: its lanes' places, and its first sample's index.
+        auto group_at = [&](int y, int x, f8& i, f8& j) {
+            i = to_float(kLaneIndex) + float(x - t.origin_x), j = splat(float(y - t.origin_y));
+            return splat_i(int32_t(fb.sample_index(0, y))) + (kLaneIndex + x) * Samples;
         };
         if constexpr (Samples == 1) {
             auto test = [&](int y, int x, i8 covered) {
                 need_planes();
-                const f8 z = interpolate_depth(t, to_float(kLaneIndex) + float(x - t.origin_x), splat(float(y - t.origin_y)));
+                f8 i, j;
+                const i8 pixel = group_at(y, x, i, j);
+                const f8 z = interpolate_depth(t, i, j);
                 const i8 pass = test_group(depth_row(y), x, width, z, covered, t.front_facing);
-                if (any(pass)) queue_group(y, x, pass, splat_i(1));
+                if (any(pass)) queue_lanes(pass, i, j, z, pixel, splat_i(1));
             };
             // A triangle up to four pixels wide and eight tall (most of a fine mesh's): its
             // pixels in blocks of 4x2, a block's coverage, depth test and queued group at
@@ -370,9 +376,7 @@ struct TileBackEnd {
                     const f8 z = interpolate_depth(t, i, j);
                     const size_t at = fb.sample_index(bx, by);
                     const i8 pass = tests.depth.test_block(fb.depth_plane() + at, width, z, covered);
-                    if (!any(pass)) return;
-                    queued += unsigned(__builtin_popcount(bits(pass)));
-                    queue.push(pass, z, interpolate_varyings<L>(t, i, j), splat_i(int32_t(at)) + kBlockColumn + kBlockRow * width, splat_i(1));
+                    if (any(pass)) queue_lanes(pass, i, j, z, splat_i(int32_t(at)) + kBlockColumn + kBlockRow * width, splat_i(1));
                 });
             } else if (bw <= kNarrow && bw * bh >= 6 && has_small_edges(t)) {
                 rasterize_small<1>(t, [&](int y, int x, const std::array<i8, 1>& covered) { test(y, x, covered[0]); });
@@ -398,7 +402,9 @@ struct TileBackEnd {
                 }
                 if (!passed) return;
                 const i8 samples = (splat_i(int32_t(passed)) >> (kLaneIndex * Samples)) & ((1 << Samples) - 1);
-                queue_group(y, x, samples != 0, samples);
+                f8 i, j;
+                const i8 pixel = group_at(y, x, i, j);
+                queue_lanes(samples != 0, i, j, interpolate_depth(t, i, j), pixel, samples);  // (the depth at the pixel center)
             };
             // (Small edges: coverage in 32-bit lanes; else from each row's exact spans.)
             if (has_small_edges(t)) rasterize_small<Samples>(t, test);

@@ -122,9 +122,9 @@ void finish_vertices8(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& pl
 #if SOFTRASTER_HAS_AVX2_PATH
 // The same with the clip positions read as eight 16-byte rows and the results written as
 // rows, each set of four turned from rows to lanes and back by simd::transpose4x4_halves,
-// with no branch per vertex: the
-// positions, window coordinates and snapped positions of the vertices that are not valid
-// are written too, which their readers never look at ("valid when the outcode is 0").
+// with no branch per vertex: the window coordinates and snapped positions of the vertices
+// that are not valid are written too, which their readers never look at ("valid when the
+// outcode is 0").
 // Snapping: v 256 is exact in float, and cvtps2dq rounds it to nearest even as lrint does.
 template <int N>
 [[gnu::target("avx2")]] inline void finish_vertices8_avx2(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
