@@ -3,6 +3,10 @@
 // point-in-triangle test with the top-left rule says so at its Direct3D position; shared
 // edges cover each sample once; and a flat-colored scene resolves to the exact coverage
 // fraction.
+#include <algorithm>
+#include <array>
+#include <random>
+
 #include <gtest/gtest.h>
 
 #include "softraster/pipeline/sample_pattern.h"
@@ -163,5 +167,35 @@ TEST(SamplePatternsAnyCount, TinyTrianglesCoveredExactlyWhenInside) {
                         }
             }
             EXPECT_GT(covered_total, 20 * n) << "samples " << n;
+        }
+}
+
+// The pixels a triangle's samples may fall in (pixel_bounds), against the formula worked
+// out here in 64-bit integers: from ceil((m - hi) / 256) to floor((M - lo) / 256) across and
+// down, for every sample count's extent, corners anywhere in the guard band or a few pixels
+// apart, in every order, and all three at one point.
+TEST(PixelBounds, MatchTheirFormula) {
+    auto floor_div = [](int64_t v) { return v >= 0 ? v / 256 : -((-v + 255) / 256); };
+    std::mt19937 rng(5);
+    const int32_t reach = (65536 + 8192) * 256;  // the guard band's corner, in 1/256 pixel
+    std::uniform_int_distribution<int32_t> anywhere(-reach, reach), close(-1024, 1024);
+    const SampleExtent extents[] = {sample_extent<1>(), sample_extent<2>(), sample_extent<4>(), sample_extent<8>(), sample_extent<16>()};
+    for (const SampleExtent& s : extents)
+        for (int trial = 0; trial < 20000; ++trial) {
+            ShadedVertex<1> v[3];
+            const int32_t x = anywhere(rng), y = anywhere(rng);
+            for (ShadedVertex<1>& c : v) {
+                c.X = trial % 2 ? anywhere(rng) : x + close(rng), c.Y = trial % 2 ? anywhere(rng) : y + close(rng);
+                if (trial % 7 == 0) c.X = x, c.Y = y;
+            }
+            const int64_t mx = std::min({v[0].X, v[1].X, v[2].X}), my = std::min({v[0].Y, v[1].Y, v[2].Y});
+            const int64_t Mx = std::max({v[0].X, v[1].X, v[2].X}), My = std::max({v[0].Y, v[1].Y, v[2].Y});
+            const Rect want{int(floor_div(mx - s.x_hi + 255)), int(floor_div(my - s.y_hi + 255)), int(floor_div(Mx - s.x_lo) + 1), int(floor_div(My - s.y_lo) + 1)};
+            for (const auto& [i, j, k] : {std::array{0, 1, 2}, std::array{1, 2, 0}, std::array{2, 0, 1}, std::array{0, 2, 1}}) {
+                const Rect got = pixel_bounds(v[i], v[j], v[k], s);
+                ASSERT_TRUE(got.x0 == want.x0 && got.y0 == want.y0 && got.x1 == want.x1 && got.y1 == want.y1)
+                    << "extent " << s.x_lo << ".." << s.x_hi << " trial " << trial << ": " << got.x0 << "," << got.y0 << " " << got.x1 << ","
+                    << got.y1 << " want " << want.x0 << "," << want.y0 << " " << want.x1 << "," << want.y1;
+            }
         }
 }

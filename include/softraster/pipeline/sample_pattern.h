@@ -55,13 +55,25 @@ constexpr SampleExtent sample_extent() {
 // ceil((m - hi) / 256) <= i <= floor((M - lo) / 256). Empty for most triangles of a mesh
 // finer than the pixels: they fall between the samples and are dropped in binning.
 // (Binning passes the extent as a value: one copy of it serves every sample count.)
+// The four in one 4-lane vector: each corner as (X, Y, -X, -Y), whose minimum over the
+// corners is (m_x, m_y, -M_x, -M_y), then the lanes' offsets and one shift. (Triangle setup
+// runs this for every triangle in every tile; as twelve scalar minimums and maximums it was
+// 2% of bench_many_spheres, docs/performance.md.) The negations and sums are done on
+// unsigned lanes, where overflow is defined; nothing overflows in fact, since the clipper's
+// guard band keeps the corners within 2^25 of 0.
 template <class V>
 inline Rect pixel_bounds(const V& a, const V& b, const V& c, const SampleExtent& s) {
-    constexpr int kRoundUp = int(kSubpixelOne) - 1;
-    return {(std::min({a.X, b.X, c.X}) - s.x_hi + kRoundUp) >> kSubpixelBits,
-            (std::min({a.Y, b.Y, c.Y}) - s.y_hi + kRoundUp) >> kSubpixelBits,
-            ((std::max({a.X, b.X, c.X}) - s.x_lo) >> kSubpixelBits) + 1,
-            ((std::max({a.Y, b.Y, c.Y}) - s.y_lo) >> kSubpixelBits) + 1};
+    using u4 = uint32_t __attribute__((vector_size(16)));
+    using i4 = int32_t __attribute__((vector_size(16)));
+    const u4 negate = {0, 0, ~0u, ~0u};  // (x ^ negate) - negate: x in lanes 0, 1, -x in 2, 3
+    auto lanes = [&](const V& v) { return i4((u4{uint32_t(v.X), uint32_t(v.Y), uint32_t(v.X), uint32_t(v.Y)} ^ negate) - negate); };
+    const i4 p = lanes(a), q = lanes(b), r = lanes(c);
+    i4 m = p < q ? p : q;
+    m = m < r ? m : r;
+    constexpr uint32_t kRoundUp = uint32_t(kSubpixelOne - 1);  // ceil(v / 256) = floor((v + 255) / 256)
+    const u4 offset = {kRoundUp - uint32_t(s.x_hi), kRoundUp - uint32_t(s.y_hi), 0u - uint32_t(s.x_lo), 0u - uint32_t(s.y_lo)};
+    const i4 bounds = (i4(((u4(m) ^ negate) - negate) + offset) >> kSubpixelBits) + i4{0, 0, 1, 1};
+    return {bounds[0], bounds[1], bounds[2], bounds[3]};
 }
 template <int Samples, class V>
 inline Rect pixel_bounds(const V& a, const V& b, const V& c) {
