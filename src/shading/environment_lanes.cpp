@@ -45,7 +45,7 @@ vec3x8 gather_texels(const glm::vec3* texels, const i8& index) {
 // lanes::gather.)
 template <bool Wide>
 void angles(const f8& y, const f8& x, const f8& c, f8& atan2_yx, f8& acos_c) {
-    using f4 = float __attribute__((vector_size(16)));
+    using simd::f4;
     f4 half[2];
     for (int h = 0; h < 2; ++h) {
         f4 yh, xh;

@@ -144,12 +144,11 @@ private:
                 } else if constexpr (Samples == 4) {
                     // The pixel's four samples as one vector, the written ones replaced: no
                     // branch per sample, whose outcome changes from pixel to pixel at edges.
-                    using u32x4 = uint32_t __attribute__((vector_size(16)));
-                    u32x4 old;
+                    simd::u4 old;
                     std::memcpy(&old, dst, sizeof old);
-                    const u32x4 color = u32x4{} + uint32_t(packed[l]);
-                    const u32x4 written = (u32x4{1, 2, 4, 8} & uint32_t(samples_[slot])) != 0;  // (true: all ones)
-                    const u32x4 out = (old & ~written) | (color & written);
+                    const simd::u4 color = simd::u4{} + uint32_t(packed[l]);
+                    const simd::u4 written = (simd::u4{1, 2, 4, 8} & uint32_t(samples_[slot])) != 0;  // (true: all ones)
+                    const simd::u4 out = (old & ~written) | (color & written);
                     std::memcpy(static_cast<void*>(dst), &out, sizeof out);
                 } else {
                     for (int s = 0; s < Samples; ++s)

@@ -7,6 +7,7 @@
 #include <array>
 
 #include "softraster/pipeline/pipeline_types.h"
+#include "softraster/pipeline/simd.h"
 #include "softraster/pipeline/viewport.h"
 
 namespace softraster {
@@ -63,8 +64,7 @@ constexpr SampleExtent sample_extent() {
 // guard band keeps the corners within 2^25 of 0.
 template <class V>
 inline Rect pixel_bounds(const V& a, const V& b, const V& c, const SampleExtent& s) {
-    using u4 = uint32_t __attribute__((vector_size(16)));
-    using i4 = int32_t __attribute__((vector_size(16)));
+    using simd::i4, simd::u4;
     const u4 negate = {0, 0, ~0u, ~0u};  // (x ^ negate) - negate: x in lanes 0, 1, -x in 2, 3
     auto lanes = [&](const V& v) { return i4((u4{uint32_t(v.X), uint32_t(v.Y), uint32_t(v.X), uint32_t(v.Y)} ^ negate) - negate); };
     const i4 p = lanes(a), q = lanes(b), r = lanes(c);

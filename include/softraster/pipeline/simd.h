@@ -87,17 +87,19 @@ auto on_best_path(const F& f) {
 
 using f8 = float __attribute__((vector_size(32)));
 using i8 = int32_t __attribute__((vector_size(32)));  // also the result of comparisons: -1 true, 0 false
+// Four lanes, for the steps that have only four values (and the halves of eight).
+using f4 = float __attribute__((vector_size(16)));
+using i4 = int32_t __attribute__((vector_size(16)));
+using u4 = uint32_t __attribute__((vector_size(16)));
 
 // x in every lane, written as a shuffle of lane 0: inside the AVX2 copy (a function with
 // target("avx2") that flattens generic code into itself) GCC 12 builds `f8{} + x` from
 // inserts or through memory, but a shuffle becomes one vbroadcastss / vpbroadcastd.
 inline f8 splat(float x) {
-    using f4 = float __attribute__((vector_size(16)));
     const f4 v = {x, 0.0f, 0.0f, 0.0f};
     return __builtin_shufflevector(v, v, 0, 0, 0, 0, 0, 0, 0, 0);
 }
 inline i8 splat_i(int32_t x) {
-    using i4 = int32_t __attribute__((vector_size(16)));
     const i4 v = {x, 0, 0, 0};
     return __builtin_shufflevector(v, v, 0, 0, 0, 0, 0, 0, 0, 0);
 }
@@ -130,9 +132,7 @@ inline f8 sqrt(f8 x) {
 // and read the lanes' sign bits: on x86 with movmskps, which every x86-64 has (AVX2 code
 // gets its VEX form), instead of a reduction through shifts and ors.
 #if defined(__x86_64__) || defined(__i386__)
-using f4 = float __attribute__((vector_size(16)));
 inline bool any(i8 m) {
-    using i4 = int32_t __attribute__((vector_size(16)));
     i4 lo, hi;
     std::memcpy(&lo, &m, sizeof lo);
     std::memcpy(&hi, reinterpret_cast<const char*>(&m) + sizeof lo, sizeof hi);
@@ -213,7 +213,6 @@ inline i8 load_bytes(const uint8_t* p, int x, int width) {
     if (x + kLanes <= width) std::memcpy(&word, p + x, sizeof word);
     else std::memcpy(&word, p + x, size_t(width - x));  // (x86 is little-endian: the first bytes in the lowest lanes)
     const __m128i zero = _mm_setzero_si128(), words = _mm_unpacklo_epi8(_mm_cvtsi64_si128(int64_t(word)), zero);  // (SSE2)
-    using i4 = int32_t __attribute__((vector_size(16)));
     const i4 lo = i4(_mm_unpacklo_epi16(words, zero)), hi = i4(_mm_unpackhi_epi16(words, zero));
     return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
 }

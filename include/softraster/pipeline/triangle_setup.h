@@ -210,7 +210,7 @@ void setup_depth_plane(TriangleSetup<N>& t, const PlaneBasis& basis) {
 // on it first.)
 namespace plane_lanes {
 using d4 = double __attribute__((vector_size(32)));
-using f4 = float __attribute__((vector_size(16)));
+using simd::f4;
 
 // Lane I's value at corner v before the division by w, as a float: a varying or 1.
 template <int N, int I>
