@@ -65,14 +65,15 @@ constexpr SampleExtent sample_extent() {
 template <class V>
 inline Rect pixel_bounds(const V& a, const V& b, const V& c, const SampleExtent& s) {
     using simd::i4, simd::u4;
-    const u4 negate = {0, 0, ~0u, ~0u};  // (x ^ negate) - negate: x in lanes 0, 1, -x in 2, 3
-    auto lanes = [&](const V& v) { return i4((u4{uint32_t(v.X), uint32_t(v.Y), uint32_t(v.X), uint32_t(v.Y)} ^ negate) - negate); };
+    // Lanes 0 and 1 kept, 2 and 3 negated: (x ^ 0) - 0 = x, (x ^ ~0) - ~0 = -x.
+    auto negate_high = [](u4 v) { return (v ^ u4{0, 0, ~0u, ~0u}) - u4{0, 0, ~0u, ~0u}; };
+    auto lanes = [&](const V& v) { return i4(negate_high(u4{uint32_t(v.X), uint32_t(v.Y), uint32_t(v.X), uint32_t(v.Y)})); };
     const i4 p = lanes(a), q = lanes(b), r = lanes(c);
     i4 m = p < q ? p : q;
     m = m < r ? m : r;
     constexpr uint32_t kRoundUp = uint32_t(kSubpixelOne - 1);  // ceil(v / 256) = floor((v + 255) / 256)
     const u4 offset = {kRoundUp - uint32_t(s.x_hi), kRoundUp - uint32_t(s.y_hi), 0u - uint32_t(s.x_lo), 0u - uint32_t(s.y_lo)};
-    const i4 bounds = (i4(((u4(m) ^ negate) - negate) + offset) >> kSubpixelBits) + i4{0, 0, 1, 1};
+    const i4 bounds = (i4(negate_high(u4(m)) + offset) >> kSubpixelBits) + i4{0, 0, 1, 1};
     return {bounds[0], bounds[1], bounds[2], bounds[3]};
 }
 template <int Samples, class V>
