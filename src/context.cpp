@@ -16,7 +16,7 @@ void for_each_item(WorkerPool* pool, size_t count, F&& fn) {
 // The (command, chunk) pairs of one phase, across all commands, so that small draws share
 // the threads instead of each taking a turn.
 template <class Count>
-std::vector<std::pair<Command*, size_t>> work_items(const std::vector<std::unique_ptr<Command>>& commands, Count count) {
+std::vector<std::pair<Command*, size_t>> work_items(std::span<const std::unique_ptr<Command>> commands, Count count) {
     std::vector<std::pair<Command*, size_t>> items;
     for (const auto& c : commands)
         for (size_t i = 0, n = count(*c); i < n; ++i) items.push_back({c.get(), i});
@@ -25,7 +25,7 @@ std::vector<std::pair<Command*, size_t>> work_items(const std::vector<std::uniqu
 
 }  // namespace
 
-void Context::list_commands_by_tile(const TileGrid& grid) {
+void Context::list_commands_by_tile(Commands batch, const TileGrid& grid) {
     // A counting sort of (tile, command) pairs by tile, commands in draw order: a binned
     // command in the tiles where it has triangles, any other in every tile.
     const auto tiles = size_t(grid.count());
@@ -42,11 +42,14 @@ void Context::list_commands_by_tile(const TileGrid& grid) {
             }
     };
     tile_first_.assign(tiles + 1, 0);
-    for (const auto& c : commands_) for_each_tile(*c, [&](size_t t) { ++tile_first_[t + 1]; });
+    for (const auto& c : batch) for_each_tile(*c, [&](size_t t) { ++tile_first_[t + 1]; });
     for (size_t t = 1; t <= tiles; ++t) tile_first_[t] += tile_first_[t - 1];
     tile_commands_.resize(tile_first_[tiles]);
     std::vector<uint32_t> cursor(tile_first_.begin(), tile_first_.end() - 1);
-    for (const auto& c : commands_) for_each_tile(*c, [&](size_t t) { tile_commands_[cursor[t]++] = c.get(); });
+    for (const auto& c : batch) for_each_tile(*c, [&](size_t t) { tile_commands_[cursor[t]++] = c.get(); });
+    busy_tiles_.clear();
+    for (size_t t = 0; t < tiles; ++t)
+        if (tile_first_[t + 1] > tile_first_[t]) busy_tiles_.push_back(uint32_t(t));
 }
 
 void Context::execute() {
@@ -55,24 +58,39 @@ void Context::execute() {
     target.grid = TileGrid(fb_->width(), fb_->height());
     target.planes = ClipPlanes::for_viewport(fb_->width(), fb_->height());
     target.viewport = {fb_->width(), fb_->height()};
-    for (auto& c : commands_) {
-        c->prepare();
+    for (auto& c : commands_)
         if (c->uses_stencil()) fb_->add_stencil();
+    // The commands in batches (Context::batching), each through every phase before the next:
+    // a tile's commands run in draw order within a batch, and the batches in order.
+    fragments_shaded_ = 0;
+    batches_ = 0;
+    for (size_t begin = 0, end; begin < commands_.size(); begin = end) {
+        size_t bytes = 0;
+        for (end = begin; end < commands_.size();) {
+            bytes += commands_[end++]->post_transform_bytes();
+            if (end - begin >= batching.draws && bytes >= batching.bytes) break;
+        }
+        execute_batch(Commands(commands_).subspan(begin, end - begin), target);
+        ++batches_;
     }
+}
+
+void Context::execute_batch(Commands batch, const DrawTarget& target) {
+    for (auto& c : batch) c->prepare();
 
     // The front end. A small draw is one item (Command::process_small): with many small
     // draws, processing all vertices first would have evicted them from the cache before
     // binning. Bigger draws go in two phases, every chunk of a phase in parallel.
-    const auto vertex_items = work_items(commands_, [&](const Command& c) { return c.small() ? size_t(1) : c.vertex_chunks(); });
+    const auto vertex_items = work_items(batch, [&](const Command& c) { return c.small() ? size_t(1) : c.vertex_chunks(); });
     for_each_item(pool_, vertex_items.size(), [&](size_t i, unsigned) {
         Command& c = *vertex_items[i].first;
         if (!c.small()) return c.process_vertex_chunk(vertex_items[i].second, target);
         c.process_small(target);
     });
-    const auto bin_items = work_items(commands_, [&](const Command& c) { return c.small() ? size_t(0) : c.primitive_chunks(); });
+    const auto bin_items = work_items(batch, [&](const Command& c) { return c.small() ? size_t(0) : c.primitive_chunks(); });
     for_each_item(pool_, bin_items.size(), [&](size_t i, unsigned) { bin_items[i].first->bin_primitive_chunk(bin_items[i].second, target); });
-    for (auto& c : commands_) c->finish_binning(target.grid);
-    list_commands_by_tile(target.grid);
+    for (auto& c : batch) c->finish_binning(target.grid);
+    list_commands_by_tile(batch, target.grid);
 
     // The back end: one thread per tile at a time, the tile's commands in draw order, so the
     // framebuffer needs no locks. Runs of opaque draws with heavy overdraw are drawn in two
@@ -87,7 +105,8 @@ void Context::execute() {
     std::vector<Count> shaded(threads);
     owners_.resize(size_t(threads) * tile_samples);
     fb_->allow_deferred_clears();
-    for_each_item(pool_, size_t(target.grid.count()), [&](size_t tile, unsigned thread) {
+    for_each_item(pool_, busy_tiles_.size(), [&](size_t item, unsigned thread) {
+        const size_t tile = busy_tiles_[item];
         const Rect rect = target.grid.tile_rect(int(tile));
         uint32_t* owners = owners_.data() + size_t(thread) * tile_samples;
         const std::span<Command* const> draws(tile_commands_.data() + tile_first_[tile], tile_first_[tile + 1] - tile_first_[tile]);
@@ -105,7 +124,6 @@ void Context::execute() {
             c = end;
         }
     });
-    fragments_shaded_ = 0;
     for (const Count& s : shaded) fragments_shaded_ += s.n;
 }
 

@@ -185,18 +185,22 @@ inline const std::array<DepthCase, 4> kDepthCases = {
 
 // Every sample's color and depth after drawing `meshes` in order (two threads, no culling;
 // with stencil_always, a stencil test that every fragment passes and that changes nothing,
-// which sends the draws to the general back end's command).
+// which sends the draws to the general back end's command; `batching`, how the context splits
+// the draws into batches).
 struct SamplePicture {
     std::vector<Rgba8> color;
     std::vector<float> depth;
     uint64_t shaded = 0;  // fragments shaded
+    size_t batches = 0;   // the context's batches
 };
 template <bool Pure>
 SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase depth, const std::vector<RgbMesh>& meshes,
-                              std::atomic<uint64_t>* batch_calls = nullptr, bool stencil_always = false) {
+                              std::atomic<uint64_t>* batch_calls = nullptr, bool stencil_always = false,
+                              Context::Batching batching = {}) {
     Framebuffer fb(width, height, samples);
     WorkerPool pool(2);
     Context ctx(fb, &pool);
+    ctx.batching = batching;
     ctx.clear(glm::vec4(0, 0, 0, 1), depth.clear);
     ctx.state.cull = CullMode::None;
     ctx.state.depth_func = depth.func;
@@ -206,7 +210,7 @@ SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase dept
     ctx.execute();
     const size_t n = size_t(width) * size_t(height) * size_t(samples);
     return {std::vector<Rgba8>(fb.color_data(), fb.color_data() + n), std::vector<float>(fb.depth_data(), fb.depth_data() + n),
-            ctx.fragments_shaded()};
+            ctx.fragments_shaded(), ctx.batches()};
 }
 
 // The pipelines of the shaders most tests share are compiled once, in test_support.cpp, not
@@ -215,7 +219,9 @@ SamplePicture draw_rgb_meshes(int width, int height, int samples, DepthCase dept
 // function, such as Context::draw, from being compiled again where it is called.)
 extern template void draw<ConstantColorShader>(Context&, const ConstantColorShader&, const std::vector<ClipVertexIn>&,
                                                const std::vector<uint32_t>&, Topology);
-extern template SamplePicture draw_rgb_meshes<true>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*, bool);
-extern template SamplePicture draw_rgb_meshes<false>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*, bool);
+extern template SamplePicture draw_rgb_meshes<true>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*, bool,
+                                                   Context::Batching);
+extern template SamplePicture draw_rgb_meshes<false>(int, int, int, DepthCase, const std::vector<RgbMesh>&, std::atomic<uint64_t>*, bool,
+                                                    Context::Batching);
 
 }  // namespace softraster::test

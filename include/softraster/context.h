@@ -8,11 +8,12 @@
 //   Image picture = ctx.read_pixels();      // runs what was recorded, then resolves
 //
 // Draws are recorded, not run at once: the vertex and index data and whatever the shader
-// points to must stay alive until finish() (or read_pixels()). Running a whole frame at once
-// is what lets it be split over threads: vertex processing -> primitive assembly ->
-// clipping -> perspective divide & viewport -> culling -> binning into tiles, then per tile,
-// in draw order: triangle setup -> rasterization -> fragment shading -> output merge.
-// The picture does not depend on the number of threads.
+// points to must stay alive until finish() (or read_pixels()). Running many draws at once
+// (the whole frame, or a batch of a few hundred: Context::batching) is what lets them be
+// split over threads: vertex processing -> primitive assembly -> clipping -> perspective
+// divide & viewport -> culling -> binning into tiles, then per tile, in draw order: triangle
+// setup -> rasterization -> fragment shading -> output merge. The picture does not depend on
+// the number of threads, nor on the batches.
 #pragma once
 #include <memory>
 #include <span>
@@ -39,6 +40,20 @@ public:
     explicit Context(Framebuffer& fb, WorkerPool* pool = nullptr) : fb_(&fb), pool_(pool) {}
 
     RenderState state;  // applies to the draws recorded after it is set
+
+    // How execute() splits the recorded commands into batches, each run through the whole
+    // pipeline (front end, then the tiles) before the next, as llvmpipe rasterizes its scene
+    // when the bins fill. Thousands of small draws write far more post-transform vertices
+    // than the caches hold; in batches, the tiles read them back while they are still
+    // cached. A batch closes once it holds at least `draws` commands and `bytes` of
+    // post-transform vertices. (The draw count keeps scenes of a few big meshes in one
+    // batch: a tile's run of draws in two passes, hidden_surface_removal.h, ends where its
+    // batch ends.) The picture is the same for any split; docs/performance.md has the numbers.
+    struct Batching {
+        size_t bytes = size_t(2) << 20;
+        size_t draws = 256;
+    };
+    Batching batching;
 
     // Clears color, depth and (if the framebuffer has one) stencil.
     void clear(const glm::vec4& color, float depth = 1.0f, uint8_t stencil = 0) {
@@ -83,6 +98,7 @@ public:
     void set_framebuffer(Framebuffer& fb) { fb_ = &fb; }
     Framebuffer& framebuffer() { return *fb_; }
     uint64_t fragments_shaded() const { return fragments_shaded_; }  // by the last execute()
+    size_t batches() const { return batches_; }                      // run by the last execute()
 
 private:
     template <Topology T, Shader S>
@@ -97,17 +113,22 @@ private:
             commands_.push_back(std::make_unique<TriangleCommand<S, Samples, T>>(shader, state, vertices, indices));
         });
     }
-    void list_commands_by_tile(const TileGrid& grid);
+    using Commands = std::span<const std::unique_ptr<Command>>;
+    void execute_batch(Commands batch, const DrawTarget& target);
+    void list_commands_by_tile(Commands batch, const TileGrid& grid);
 
     Framebuffer* fb_;
     WorkerPool* pool_;
     std::vector<uint32_t> owners_;  // per thread: the owner of each sample of its tile
     std::vector<std::unique_ptr<Command>> commands_;
-    // Each tile's commands in draw order: tile t's are tile_commands_[tile_first_[t] ..
-    // tile_first_[t + 1]). Built after binning, so a tile visits only the draws that touch it.
+    // Each tile's commands of the batch in draw order: tile t's are tile_commands_[tile_first_[t]
+    // .. tile_first_[t + 1]). Built after binning, so a tile visits only the draws that touch
+    // it; busy_tiles_ lists the tiles that have any, the back end's work items.
     std::vector<uint32_t> tile_first_;
     std::vector<Command*> tile_commands_;
+    std::vector<uint32_t> busy_tiles_;
     uint64_t fragments_shaded_ = 0;
+    size_t batches_ = 0;
 };
 
 }  // namespace softraster

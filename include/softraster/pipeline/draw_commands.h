@@ -43,6 +43,8 @@ public:
     virtual ~Command() = default;
     // Sizes the command's buffers (sequentially, before the parallel phases).
     virtual void prepare() {}
+    // Bytes of post-transform vertices its front end writes for its back end to read.
+    virtual size_t post_transform_bytes() const { return 0; }
     virtual size_t vertex_chunks() const { return 0; }
     virtual void process_vertex_chunk(size_t, const DrawTarget&) {}
     virtual size_t primitive_chunks() const { return 0; }
@@ -233,6 +235,7 @@ public:
     }
 
     bool uses_stencil() const override { return state_.stencil_test; }
+    size_t post_transform_bytes() const override { return vertices_.size() * sizeof(ShadedVertex<N>); }
     void prepare() override {
         post_.resize(vertices_.size());
         if (!this->small()) clip_.resize(vertices_.size());  // (a small draw's: process_small)

@@ -1,0 +1,102 @@
+// The context's batches (Context::batching): the recorded commands run through the whole
+// pipeline a batch at a time, and the picture is the same however they are split.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "test_support.h"
+
+using namespace softraster;
+using namespace softraster::test;
+
+namespace {
+
+constexpr int W = 150, H = 100;
+
+// Forty draws over three tiles: overlapping quads at repeated depths (ties), which make
+// runs worth hidden-surface removal's two passes, and between them draws of a few tiny
+// triangles (the fragment queue's).
+std::vector<RgbMesh> overlapping_draws() {
+    std::mt19937 rng(43);
+    std::uniform_real_distribution<float> u(0, 1);
+    std::vector<RgbMesh> out;
+    for (int d = 0; d < 40; ++d) {
+        RgbMesh m;
+        auto vertex = [&](float x, float y, float z) { m.vertices.push_back({window_to_clip(x, y, W, H, z, 1.0f + u(rng)), glm::vec3(u(rng), u(rng), u(rng))}); };
+        if (d % 3 == 2) {
+            for (int t = 0; t < 20; ++t) {
+                const float x = u(rng) * W, y = u(rng) * H, z = u(rng);
+                for (int k = 0; k < 3; ++k) vertex(x + 4 * u(rng), y + 4 * u(rng), z);
+                for (uint32_t k = 0; k < 3; ++k) m.indices.push_back(uint32_t(3 * t) + k);
+            }
+        } else {
+            const float z = float(d % 5) * 0.1f + 0.2f;
+            const float x0 = u(rng) * W * 0.5f - 10, y0 = u(rng) * H * 0.5f - 10, x1 = x0 + 40 + u(rng) * W, y1 = y0 + 30 + u(rng) * H;
+            for (glm::vec2 p : {glm::vec2(x0, y0), glm::vec2(x1, y0), glm::vec2(x1, y1), glm::vec2(x0, y1)}) vertex(p.x, p.y, z + 0.05f * u(rng));
+            m.indices = {0, 1, 2, 0, 2, 3};
+        }
+        out.push_back(m);
+    }
+    return out;
+}
+
+}  // namespace
+
+// One batch, a batch per command, and batches of five give the same samples through every
+// back end: the pure shader's (two passes, the fragment queue), the plain one and the general
+// one, with and without MSAA, for every depth function; and but for the two passes' savings,
+// they shade the same fragments.
+TEST(Batches, SamePictureInAnySplit) {
+    const std::vector<RgbMesh> draws = overlapping_draws();
+    const size_t commands = draws.size() + 1;  // (and the clear)
+    const Context::Batching each{0, 1}, fives{0, 5};
+    for (int samples : {1, 4})
+        for (DepthCase c : kDepthCases)
+            for (int path = 0; path < 3; ++path) {
+                auto picture = [&](Context::Batching b) {
+                    if (path == 0) return draw_rgb_meshes<true>(W, H, samples, c, draws, nullptr, false, b);
+                    return draw_rgb_meshes<false>(W, H, samples, c, draws, nullptr, /*stencil_always=*/path == 2, b);
+                };
+                const SamplePicture whole = picture({});
+                const SamplePicture split = picture(each), in_fives = picture(fives);
+                const std::string where = "samples " + std::to_string(samples) + " func " + std::to_string(int(c.func)) + " path " + std::to_string(path);
+                ASSERT_EQ(whole.batches, 1u) << where;
+                ASSERT_EQ(split.batches, commands) << where;
+                ASSERT_EQ(in_fives.batches, (commands + 4) / 5) << where;
+                for (const SamplePicture* p : {&split, &in_fives}) {
+                    EXPECT_TRUE(p->color == whole.color) << "color differs, " << where;
+                    EXPECT_TRUE(p->depth == whole.depth) << "depth differs, " << where;
+                    // (Hidden-surface removal's runs end with their batch: split, it saves less.)
+                    if (path == 0) EXPECT_GE(p->shaded, whole.shaded) << where;
+                    else EXPECT_EQ(p->shaded, whole.shaded) << where;
+                }
+            }
+}
+
+// A batch closes at the first command that brings it to `draws` commands and `bytes` of
+// post-transform vertices; by default 256 and 2 MB.
+TEST(Batches, CloseAtTheirDrawsAndBytes) {
+    Framebuffer fb(64, 64);
+    Context ctx(fb);
+    // 600 draws of 1,000 vertices each (all behind the eye: nothing to rasterize).
+    const std::vector<ClipVertexIn> vertices(1000, ClipVertexIn{glm::vec4(0, 0, -2, 1)});
+    const std::vector<uint32_t> indices = {0, 1, 2};
+    for (int d = 0; d < 600; ++d) ctx.draw(Topology::Triangles, ConstantColorShader{}, std::span(vertices), std::span(indices));
+    const size_t per_draw = vertices.size() * sizeof(ShadedVertex<1>);
+    auto expected = [&] {
+        const size_t per_batch = std::max(ctx.batching.draws, (ctx.batching.bytes + per_draw - 1) / per_draw);
+        return (600 + per_batch - 1) / per_batch;
+    };
+    ASSERT_EQ(ctx.batching.draws, 256u);
+    ASSERT_EQ(ctx.batching.bytes, size_t(2) << 20);
+    ASSERT_LT(ctx.batching.bytes / per_draw, 256u);  // the draws decide: 256, 256 and 88
+    ctx.execute();
+    EXPECT_EQ(ctx.batches(), 3u);
+    ctx.batching.draws = 10;  // the bytes decide
+    ctx.execute();
+    EXPECT_EQ(ctx.batches(), expected());
+    EXPECT_GT(ctx.batches(), 3u);
+    ctx.batching.bytes = 0;  // the draws alone
+    ctx.execute();
+    EXPECT_EQ(ctx.batches(), 60u);
+}
