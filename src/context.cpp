@@ -76,7 +76,20 @@ void Context::execute() {
 }
 
 void Context::execute_batch(Commands batch, const DrawTarget& target) {
-    for (auto& c : batch) c->prepare();
+    // The batch's post-transform vertices in one block of memory, the same block batch after
+    // batch: the vertices the front end writes land on cache lines the tiles have just read.
+    auto footprint = [](const Command& c) { return (c.post_transform_bytes() + 63) & ~size_t(63); };  // (64-byte aligned)
+    size_t bytes = 0;
+    for (auto& c : batch) bytes += footprint(*c);
+    if (bytes > post_transform_size_) {
+        post_transform_.reset(static_cast<std::byte*>(::operator new(bytes, std::align_val_t(64))));
+        post_transform_size_ = bytes;
+    }
+    bytes = 0;
+    for (auto& c : batch) {
+        c->prepare(post_transform_.get() + bytes);
+        bytes += footprint(*c);
+    }
 
     // The front end. A small draw is one item (Command::process_small): with many small
     // draws, processing all vertices first would have evicted them from the cache before

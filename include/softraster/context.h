@@ -15,7 +15,9 @@
 // setup -> rasterization -> fragment shading -> output merge. The picture does not depend on
 // the number of threads, nor on the batches.
 #pragma once
+#include <cstddef>
 #include <memory>
+#include <new>
 #include <span>
 #include <vector>
 
@@ -129,6 +131,12 @@ private:
     std::vector<uint32_t> busy_tiles_;
     uint64_t fragments_shaded_ = 0;
     size_t batches_ = 0;
+    // The batch's post-transform vertices (Command::prepare): as big as the biggest batch's.
+    struct AlignedDelete {
+        void operator()(std::byte* p) const { ::operator delete(p, std::align_val_t(64)); }
+    };
+    std::unique_ptr<std::byte[], AlignedDelete> post_transform_;
+    size_t post_transform_size_ = 0;
 };
 
 }  // namespace softraster

@@ -15,6 +15,7 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -41,10 +42,12 @@ struct DrawTarget {
 class Command {
 public:
     virtual ~Command() = default;
-    // Sizes the command's buffers (sequentially, before the parallel phases).
-    virtual void prepare() {}
     // Bytes of post-transform vertices its front end writes for its back end to read.
     virtual size_t post_transform_bytes() const { return 0; }
+    // Places those vertices at `memory` (post_transform_bytes() of it, 64-byte aligned: the
+    // context's, reused batch after batch) and sizes the command's other buffers
+    // (sequentially, before the parallel phases).
+    virtual void prepare(std::byte* /*memory*/) {}
     virtual size_t vertex_chunks() const { return 0; }
     virtual void process_vertex_chunk(size_t, const DrawTarget&) {}
     virtual size_t primitive_chunks() const { return 0; }
@@ -236,22 +239,24 @@ public:
 
     bool uses_stencil() const override { return state_.stencil_test; }
     size_t post_transform_bytes() const override { return vertices_.size() * sizeof(ShadedVertex<N>); }
-    void prepare() override {
-        post_.resize(vertices_.size());
+    void prepare(std::byte* memory) override {
+        // (Not zeroed: vertex processing writes every vertex, and a vertex it cannot map to
+        // the window is read only through its clip part.)
+        post_ = {reinterpret_cast<ShadedVertex<N>*>(memory), vertices_.size()};
         if (!this->small()) clip_.resize(vertices_.size());  // (a small draw's: process_small)
         if (primitive_chunks() > 1) bins_.resize(primitive_chunks());  // (one: one_bin_)
     }
     size_t vertex_chunks() const override { return (vertices_.size() + kVertexChunk - 1) / kVertexChunk; }
     void process_vertex_chunk(size_t c, const DrawTarget& target) override {
         const size_t begin = c * kVertexChunk, end = std::min(vertices_.size(), begin + kVertexChunk);
-        phases::process_vertices(shader_, vertices_, begin, end, target, std::span<ShadedVertex<N>>(post_), std::span<ClipInfo>(clip_));
+        phases::process_vertices(shader_, vertices_, begin, end, target, post_, std::span<ClipInfo>(clip_));
     }
     // A small draw's clip parts are read by its binning alone, right after: they live in a
     // buffer of the thread's (small_draw_clip_parts), not in the draw's memory.
     void process_small(const DrawTarget& target) override {
         std::vector<ClipInfo>& clip = small_draw_clip_parts();
         clip.resize(vertices_.size());
-        if (vertex_chunks() == 1) phases::process_vertices(shader_, vertices_, 0, vertices_.size(), target, std::span<ShadedVertex<N>>(post_), std::span<ClipInfo>(clip));
+        if (vertex_chunks() == 1) phases::process_vertices(shader_, vertices_, 0, vertices_.size(), target, post_, std::span<ClipInfo>(clip));
         if (primitive_chunks() == 1) bin_chunk(0, target, clip.data());
     }
     size_t primitive_chunks() const override { return (indices_.size() / kPer + kTriangleChunk - 1) / kTriangleChunk; }
@@ -288,7 +293,7 @@ protected:
     RenderState state_;
     std::span<const Vertex> vertices_;
     std::span<const uint32_t> indices_;
-    std::vector<ShadedVertex<N>> post_;
+    std::span<ShadedVertex<N>> post_;  // in the context's memory for the batch (prepare)
     std::vector<ClipInfo> clip_;  // the clip parts of a draw that is not small (a small one's: process_small)
     std::vector<TriangleBin<N>> bins_;  // two chunks or more
     TriangleBin<N> one_bin_;
