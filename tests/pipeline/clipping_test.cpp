@@ -3,9 +3,11 @@
 // the clip position, which clipping must preserve exactly up to rounding).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "softraster/pipeline/clipping.h"
+#include "softraster/pipeline/simd.h"
 
 using namespace softraster;
 
@@ -19,6 +21,55 @@ ClipVertex<N> make_vertex(const glm::vec4& p) {
 }
 
 }  // namespace
+
+// The outcodes' distances are the planes' dot products as the clipper's glm::dot sums them,
+// bit for bit (but the sign of a zero), one point at a time and eight at once: for points
+// anywhere, of every magnitude, and exactly on each plane and one step to either side.
+TEST(ClipPlanes, DistancesAreTheDotProducts) {
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::uniform_int_distribution<int> scale(-30, 30);
+    for (const ClipPlanes& planes : {ClipPlanes::frustum(), ClipPlanes::for_viewport(1920, 1080), ClipPlanes::for_viewport(37, 5)}) {
+        std::vector<glm::vec4> points;
+        for (int k = 0; k < 4000; ++k) {
+            glm::vec4 p(u(rng), u(rng), u(rng), u(rng));
+            for (int c = 0; c < 4; ++c) p[c] = std::ldexp(p[c], scale(rng));
+            points.push_back(p);
+            // on plane i: its one free coordinate set so that the plane's sum is 0, then a step
+            // either way
+            const size_t i = size_t(k) % ClipPlanes::kCount;
+            const glm::vec4& q = planes.planes()[i];
+            const int axis = q.x != 0 ? 0 : q.y != 0 ? 1 : 2;
+            glm::vec4 on = p;
+            on[axis] = -q[axis] * (q.w * p.w);
+            for (float toward : {-INFINITY, 0.0f, INFINITY}) {
+                glm::vec4 v = on;
+                if (toward != 0.0f) v[axis] = std::nextafter(v[axis], toward);
+                points.push_back(v);
+            }
+        }
+        for (size_t k = 0; k + simd::kLanes <= points.size(); k += simd::kLanes) {
+            simd::f8 x, y, z, w;
+            for (int l = 0; l < simd::kLanes; ++l) {
+                const glm::vec4& p = points[k + size_t(l)];
+                x[l] = p.x, y[l] = p.y, z[l] = p.z, w[l] = p.w;
+            }
+            const std::array<simd::f8, ClipPlanes::kCount> lanes = planes.distances(x, y, z, w);
+            for (int l = 0; l < simd::kLanes; ++l) {
+                const glm::vec4& p = points[k + size_t(l)];
+                const std::array<float, ClipPlanes::kCount> d = planes.distances(p.x, p.y, p.z, p.w);
+                unsigned code = 0;
+                for (size_t i = 0; i < size_t(ClipPlanes::kCount); ++i) {
+                    const float dot = glm::dot(planes.planes()[i], p);
+                    ASSERT_EQ(d[i], dot) << "plane " << i << " at " << p.x << " " << p.y << " " << p.z << " " << p.w;
+                    ASSERT_EQ(lanes[i][l], dot) << "plane " << i << ", lane " << l;
+                    code |= unsigned(dot < 0.0f) << i;
+                }
+                ASSERT_EQ(planes.outcode(p), code);
+            }
+        }
+    }
+}
 
 TEST(Clipping, RandomTrianglesStayInsideAndKeepVaryings) {
     std::mt19937 rng(1234);

@@ -19,9 +19,6 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
-#include "softraster/pipeline/simd.h"
-
-
 namespace softraster {
 
 template <int N>
@@ -34,39 +31,46 @@ struct ClipVertex {
 // window coordinates, which keeps 24.8 fixed-point edge functions exact in 64-bit integers.
 inline constexpr float kGuardBandPixels = 8192.0f;
 
-// dot(q, p) summed as glm::dot sums it, for one point or, with vectors for either side,
-// several at once: every caller gets the same bits, so outcodes and the clipper agree.
-template <class Q, class P>
-auto dot4(Q qx, Q qy, Q qz, Q qw, P px, P py, P pz, P pw) {
-    return (qx * px + qy * py) + (qz * pz + qw * pw);
-}
-
-struct ClipPlanes {
+class ClipPlanes {
+public:
     static constexpr int kCount = 6;
-    std::array<glm::vec4, kCount> planes;
 
+    ClipPlanes() : ClipPlanes(1.0f, 1.0f) {}  // the exact view volume
     // The exact view volume.
-    static ClipPlanes frustum() { return guard_band(1.0f, 1.0f); }
+    static ClipPlanes frustum() { return {1.0f, 1.0f}; }
     // near, far, and x/y sides widened by the guard band for a viewport of this size.
     static ClipPlanes for_viewport(int width, int height) {
-        return guard_band(1.0f + 2.0f * kGuardBandPixels / float(width),
-                          1.0f + 2.0f * kGuardBandPixels / float(height));
-    }
-    static ClipPlanes guard_band(float gx, float gy) {
-        return {{glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, -1, 1),    // near z >= -w, far z <= w
-                 glm::vec4(1, 0, 0, gx), glm::vec4(-1, 0, 0, gx),  // left, right
-                 glm::vec4(0, 1, 0, gy), glm::vec4(0, -1, 0, gy)}};  // bottom, top
+        return {1.0f + 2.0f * kGuardBandPixels / float(width), 1.0f + 2.0f * kGuardBandPixels / float(height)};
     }
 
-    // Bit i set when p is outside plane i (Cohen–Sutherland style outcode). The six dot
-    // products side by side in vector lanes (the two spare lanes are 0, never outside), each
-    // summed as glm::dot sums it, so the clipper's glm::dot agrees bit for bit on the side.
-    unsigned outcode(const glm::vec4& p) const {
-        simd::f8 qx{}, qy{}, qz{}, qw{};
-        for (size_t i = 0; i < size_t(kCount); ++i) qx[i] = planes[i].x, qy[i] = planes[i].y, qz[i] = planes[i].z, qw[i] = planes[i].w;
-        const simd::f8 d = dot4(qx, qy, qz, qw, p.x, p.y, p.z, p.w);
-        return simd::bits(d < 0.0f);
+    // near z >= -w, far z <= w, left x >= -gx w, right x <= gx w, bottom y >= -gy w, top y <= gy w
+    const std::array<glm::vec4, kCount>& planes() const { return planes_; }
+
+    // The six dot products dot(P_i, p), in the order of planes(), for one point (T: float) or
+    // eight (simd::f8). Each plane has two zero coefficients, whose terms are exact zeros that
+    // change a sum at most in the sign of a zero, so each dot product is one addition: for
+    // finite p the same bits as the clipper's glm::dot, (P.x p.x + P.y p.y) + (P.z p.z + P.w p.w),
+    // so outcodes and the clipper agree on every side (ClipPlanes.DistancesAreTheDotProducts).
+    template <class T>
+    std::array<T, kCount> distances(T x, T y, T z, T w) const {
+        const T gwx = gx_ * w, gwy = gy_ * w;
+        return {z + w, w - z, x + gwx, gwx - x, y + gwy, gwy - y};
     }
+    // Bit i set when p is outside plane i (Cohen–Sutherland style outcode).
+    unsigned outcode(const glm::vec4& p) const {
+        const std::array<float, kCount> d = distances(p.x, p.y, p.z, p.w);
+        unsigned code = 0;
+        for (size_t i = 0; i < size_t(kCount); ++i) code |= unsigned(d[i] < 0.0f) << i;
+        return code;
+    }
+
+private:
+    ClipPlanes(float gx, float gy)
+        : planes_{{glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, -1, 1), glm::vec4(1, 0, 0, gx), glm::vec4(-1, 0, 0, gx), glm::vec4(0, 1, 0, gy),
+                   glm::vec4(0, -1, 0, gy)}},
+          gx_(gx), gy_(gy) {}
+    std::array<glm::vec4, kCount> planes_;
+    float gx_, gy_;  // the sides' reach: x and y within gx w and gy w
 };
 
 template <int N>
@@ -98,7 +102,7 @@ int clip_triangle(const ClipVertex<N>& a, const ClipVertex<N>& b, const ClipVert
     src->count = 3;
     for (int p = 0; p < ClipPlanes::kCount; ++p) {
         if (!(mask & (1u << p))) continue;
-        const glm::vec4 plane = cp.planes[size_t(p)];
+        const glm::vec4 plane = cp.planes()[size_t(p)];
         dst->count = 0;
         for (int i = 0; i < src->count; ++i) {
             const ClipVertex<N>& cur = src->v[size_t(i)];
@@ -124,7 +128,7 @@ int clip_triangle(const ClipVertex<N>& a, const ClipVertex<N>& b, const ClipVert
 template <int N>
 bool clip_line(ClipVertex<N>& p0, ClipVertex<N>& p1, const ClipPlanes& cp) {
     float t0 = 0.0f, t1 = 1.0f;
-    for (const glm::vec4& plane : cp.planes) {
+    for (const glm::vec4& plane : cp.planes()) {
         const float d0 = glm::dot(plane, p0.position);
         const float d1 = glm::dot(plane, p1.position);
         if (d0 < 0.0f && d1 < 0.0f) return false;

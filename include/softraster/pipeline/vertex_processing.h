@@ -68,7 +68,7 @@ bool finish_vertex(const ClipVertex<N>& c, const Viewport& vp, ShadedVertex<N>& 
 
 // The fixed-function part of vertex processing for eight vertices, their clip positions
 // x, y, z, w as lanes: finiteness, clip outcode, perspective divide and viewport mapping,
-// each lane computed by the helpers ClipPlanes::outcode and to_window use (dot4,
+// each lane computed by the helpers ClipPlanes::outcode and to_window use (distances,
 // window_coordinates), so the results are the same bits as one vertex at a time (no
 // contraction: CMakeLists.txt).
 struct Finished8 {
@@ -84,12 +84,9 @@ inline void finish8(const simd::f8& x, const simd::f8& y, const simd::f8& z, con
     // |v| <= FLT_MAX: false for infinities and NaN, as !std::isfinite
     auto finite = [](f8 v) { return select(v < 0.0f, -v, v) <= std::numeric_limits<float>::max(); };
     const i8 in_range = finite(x) & finite(y) & finite(z) & finite(w);
+    const std::array<f8, ClipPlanes::kCount> d = planes.distances(x, y, z, w);
     i8 outcode{};
-    for (size_t i = 0; i < size_t(ClipPlanes::kCount); ++i) {
-        const glm::vec4& q = planes.planes[i];
-        const f8 d = dot4(q.x, q.y, q.z, q.w, x, y, z, w);
-        outcode |= (d < 0.0f) & int32_t(1u << i);
-    }
+    for (size_t i = 0; i < size_t(ClipPlanes::kCount); ++i) outcode |= (d[i] < 0.0f) & int32_t(1u << i);
     const auto [wx, wy, wz, inv_w] = window_coordinates(x, y, z, w, vp);
     const i8 mapped = (w > 0.0f) & finite(wx) & finite(wy) & finite(wz) & finite(inv_w);
     // (A vertex outside is finite whether or not it maps; one inside that cannot be mapped is not.)
