@@ -3,6 +3,7 @@
 
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include <glm/trigonometric.hpp>
@@ -359,4 +360,53 @@ TEST(ShadingModels, EightFragmentsAtOnceEqualOneAtATime) {
     expect_batch_equals_scalar<Shading::BlinnPhong, false, false>(u);
     expect_batch_equals_scalar<Shading::Normals, false, false>(u);
     expect_batch_equals_scalar<Shading::Depth, false, false>(u);
+}
+
+namespace {
+
+// Vertex processing of `in` with the shader's vertex_lanes (the AVX2 path) and with vertex()
+// one vertex at a time (the generic path): the same varyings and clip positions, bit for bit.
+template <Shading M, bool Textured, bool Colored>
+void expect_vertex_lanes_equal_vertex(const SurfaceUniforms& u, const std::vector<MeshVertex>& in) {
+    using S = SurfaceShader<M, Textured, Colored>;
+    static_assert(LaneVertexShader<S>);
+    constexpr int N = kVaryingCount<typename S::Varyings>;
+    const ClipPlanes planes = ClipPlanes::for_viewport(320, 240);
+    std::vector<ShadedVertex<N>> lanes(in.size()), one(in.size());
+    std::vector<ClipInfo> lanes_clip(in.size()), one_clip(in.size());
+    process_vertices<true>(S{&u}, std::span<const MeshVertex>(in), 0, in.size(), planes, Viewport{320, 240}, std::span(lanes), std::span(lanes_clip));
+    process_vertices<false>(S{&u}, std::span<const MeshVertex>(in), 0, in.size(), planes, Viewport{320, 240}, std::span(one), std::span(one_clip));
+    for (size_t i = 0; i < in.size(); ++i) {
+        EXPECT_EQ(std::memcmp(lanes[i].var.data(), one[i].var.data(), sizeof(one[i].var)), 0) << "varyings of vertex " << i << ", model " << int(M);
+        EXPECT_EQ(std::memcmp(&lanes_clip[i].position, &one_clip[i].position, sizeof(glm::vec4)), 0) << "clip position of vertex " << i;
+    }
+}
+
+}  // namespace
+
+// The surface shaders' vertex() for eight vertices at once gives vertex()'s bits for every
+// kind of varying: world position, normal, texture coordinates (with their derivatives' zero
+// slots), vertex color, and none (one unused float); varying counts 1, 3, 6, 7 and 16, so that
+// the last four floats of a vertex go out as 1, 2, 3 or 4. Gouraud (lighting per vertex) and
+// tangents keep to vertex().
+TEST(ShadingModels, VertexLanesSameAsVertex) {
+    if (!simd::wide_path_runs()) GTEST_SKIP() << "no AVX2 on this machine";
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<float> r(-2.0f, 2.0f);
+    SurfaceUniforms u = uniforms();
+    for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 4; ++k) u.model[c][k] = r(rng), u.mvp[c][k] = r(rng);
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) u.normal_matrix[c][k] = r(rng);
+    std::vector<MeshVertex> in(45);  // five groups of eight and five left over
+    for (MeshVertex& v : in)
+        v = {glm::vec3(r(rng), r(rng), r(rng)) * 10.0f, glm::vec3(r(rng), r(rng), r(rng)), glm::vec2(r(rng), r(rng)), glm::vec4(r(rng), r(rng), r(rng), r(rng))};
+    expect_vertex_lanes_equal_vertex<Shading::BlinnPhong, false, false>(u, in);  // world, normal: 6
+    expect_vertex_lanes_equal_vertex<Shading::Pbr, true, true>(u, in);           // all but tangents: 16
+    expect_vertex_lanes_equal_vertex<Shading::Unlit, true, false>(u, in);        // uv and derivatives: 6
+    expect_vertex_lanes_equal_vertex<Shading::Lambert, false, true>(u, in);      // normal, color: 7
+    expect_vertex_lanes_equal_vertex<Shading::Normals, false, false>(u, in);     // normal: 3
+    expect_vertex_lanes_equal_vertex<Shading::Depth, false, false>(u, in);       // none: 1
+    static_assert(!LaneVertexShader<SurfaceShader<Shading::Gouraud, false, false>>);
+    static_assert(!LaneVertexShader<SurfaceShader<Shading::Pbr, true, false, true>>);
 }

@@ -128,6 +128,16 @@ concept FourShader = PairShader<S> && requires(const S s, const std::array<simd:
     s.fragment_four(v, z, true, color);
 };
 
+// vertex_lanes(in, varyings, clip): vertex() for the eight vertices in[0..8) at once, a
+// simd::f8 per varying and per clip coordinate, with the same arithmetic in the same order
+// (the same bits). Vertex processing's AVX2 path then runs it in place of eight vertex()
+// calls (vertex_processing.h).
+template <class S>
+concept LaneVertexShader = Shader<S> && requires(const S s, const typename S::Vertex* in,
+                                                 std::array<simd::f8, kVaryingCount<typename S::Varyings>>& v, std::array<simd::f8, 4>& clip) {
+    s.vertex_lanes(in, v, clip);
+};
+
 // A shader that never discards and has no side effects says so with
 // `static constexpr bool kPure = true;`: its fragments' depth can be written before they
 // are shaded, and they can be shaded in any order (fragment_queue.h,

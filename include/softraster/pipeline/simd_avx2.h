@@ -4,6 +4,8 @@
 #include "softraster/pipeline/simd.h"
 
 #if SOFTRASTER_HAS_AVX2_PATH
+#include <cstddef>
+
 #include <immintrin.h>
 
 namespace softraster::simd {
@@ -18,6 +20,35 @@ namespace softraster::simd {
     const __m256i t2 = _mm256_unpacklo_epi32(r[2], r[3]), t3 = _mm256_unpackhi_epi32(r[2], r[3]);
     r[0] = _mm256_unpacklo_epi64(t0, t2), r[1] = _mm256_unpackhi_epi64(t0, t2);
     r[2] = _mm256_unpacklo_epi64(t1, t3), r[3] = _mm256_unpackhi_epi64(t1, t3);
+}
+
+// Fields f to f + 3 of eight records `stride` bytes apart (the first at `at`), as four
+// vectors: eight 16-byte loads and the transpose above. (Each load reads all four fields: the
+// records must have them.)
+[[gnu::target("avx2")]] inline void load_columns(const void* at, size_t stride, f8 (&out)[4]) {
+    const char* p = static_cast<const char*>(at);
+    __m256i r[4];
+    for (size_t k = 0; k < 4; ++k)
+        r[k] = _mm256_castps_si256(_mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(reinterpret_cast<const float*>(p + k * stride))),
+                                                        _mm_loadu_ps(reinterpret_cast<const float*>(p + (k + 4) * stride)), 1));
+    transpose4x4_halves(r);
+    for (size_t f = 0; f < 4; ++f) out[f] = f8(_mm256_castsi256_ps(r[f]));
+}
+// The other way: the lanes of `count` vectors (1 to 4; the others are not read) into that many
+// consecutive floats of eight records `stride` bytes apart, writing nothing else.
+[[gnu::target("avx2")]] inline void store_columns(const f8 (&in)[4], int count, void* at, size_t stride) {
+    char* p = static_cast<char*>(at);
+    __m256i r[4];
+    for (size_t f = 0; f < 4; ++f) r[f] = _mm256_castps_si256(__m256(in[f]));
+    transpose4x4_halves(r);
+    for (size_t k = 0; k < 8; ++k) {
+        const __m128i row = k < 4 ? _mm256_castsi256_si128(r[k]) : _mm256_extracti128_si256(r[k - 4], 1);
+        char* q = p + k * stride;
+        if (count == 4) _mm_storeu_si128(reinterpret_cast<__m128i*>(q), row);
+        else if (count >= 2) _mm_storel_epi64(reinterpret_cast<__m128i*>(q), row);
+        if (count == 3) _mm_store_ss(reinterpret_cast<float*>(q + 8), _mm_castsi128_ps(_mm_unpackhi_epi64(row, row)));
+        if (count == 1) _mm_store_ss(reinterpret_cast<float*>(q), _mm_castsi128_ps(row));
+    }
 }
 
 }  // namespace softraster::simd

@@ -5,6 +5,7 @@
 // vertex only is done here too, once: its clip outcode, the perspective divide and viewport
 // mapping, and the snapping of its window position to 24.8 fixed point.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -171,9 +172,28 @@ template <int N>
     finish_vertices8(out, clip, planes, vp);
 }
 
+#if SOFTRASTER_HAS_AVX2_PATH
+// A lane shader's eight vertices in[0..8) into out[0..8) (varyings) and clip[0..8) (clip
+// positions), the lanes turned into records four floats at a time.
+template <LaneVertexShader S>
+SOFTRASTER_AVX2_TARGET void shade_vertices8(const S& shader, const typename S::Vertex* in, ShadedVertex<kVaryingCount<typename S::Varyings>>* out,
+                                            ClipInfo* clip) {
+    constexpr size_t N = size_t(kVaryingCount<typename S::Varyings>);
+    std::array<simd::f8, N> var;
+    std::array<simd::f8, 4> position;
+    shader.vertex_lanes(in, var, position);
+    for (size_t g = 0; g < N; g += 4) {
+        const simd::f8 four[4] = {var[g], var[std::min(g + 1, N - 1)], var[std::min(g + 2, N - 1)], var[std::min(g + 3, N - 1)]};
+        simd::store_columns(four, int(std::min<size_t>(4, N - g)), &out->var[g], sizeof(*out));
+    }
+    const simd::f8 p[4] = {position[0], position[1], position[2], position[3]};
+    simd::store_columns(p, 4, &clip->position, sizeof(*clip));
+}
+#endif
+
 // Shades vertices [begin, end) of `vertices` into out[begin, end) and clip[begin, end): the
-// vertex shader one vertex at a time, the fixed-function part eight at a time. WideLanes:
-// in the AVX2 copy.
+// vertex shader one vertex at a time (or eight, for a lane shader in the AVX2 copy), the
+// fixed-function part eight at a time. WideLanes: in the AVX2 copy.
 template <bool WideLanes = false, Shader S>
 void process_vertices(const S& shader, std::span<const typename S::Vertex> vertices, size_t begin, size_t end,
                       const ClipPlanes& planes, const Viewport& vp,
@@ -185,7 +205,11 @@ void process_vertices(const S& shader, std::span<const typename S::Vertex> verti
     };
     size_t i = begin;
     for (; i + simd::kLanes <= end; i += simd::kLanes) {
-        for (size_t l = 0; l < size_t(simd::kLanes); ++l) shade(i + l);
+#if SOFTRASTER_HAS_AVX2_PATH
+        if constexpr (WideLanes && LaneVertexShader<S>) shade_vertices8(shader, &vertices[i], &out[i], &clip[i]);
+        else
+#endif
+            for (size_t l = 0; l < size_t(simd::kLanes); ++l) shade(i + l);
         if constexpr (WideLanes && SOFTRASTER_HAS_AVX2_PATH) finish_vertices8_wide(&out[i], &clip[i], planes, vp);
         else finish_vertices8_generic(&out[i], &clip[i], planes, vp);
     }

@@ -13,6 +13,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "softraster/pipeline/shader.h"
+#include "softraster/pipeline/simd_avx2.h"
 #include "softraster/shading/lighting.h"
 #include "softraster/shading/normal_mapping.h"
 #include "softraster/shading/pbr.h"
@@ -97,6 +98,39 @@ struct SurfaceShader {
         if constexpr (Varyings::kColor) out.color = in.color;
         return u->mvp * glm::vec4(in.position, 1.0f);
     }
+
+#if SOFTRASTER_HAS_AVX2_PATH
+    // vertex() for eight vertices (shader.h, LaneVertexShader): each product in glm's order,
+    // mat4 * vec4 as (m0 x + m1 y) + (m2 z + m3 w) and mat3 * vec3 as (m0 x + m1 y) + m2 z,
+    // lane by lane, so every varying and clip coordinate has vertex()'s bits (w = 1: m3 w is
+    // m3). Not for Gouraud's per-vertex lighting or tangents.
+    SOFTRASTER_AVX2_TARGET void vertex_lanes(const Vertex* in, std::array<simd::f8, kVaryingCount<Varyings>>& out, std::array<simd::f8, 4>& clip) const
+        requires(!Varyings::kIntensity && !Varyings::kTangent) {
+        using simd::f8;
+        constexpr size_t kStride = sizeof(Vertex);
+        f8 a[4], b[4];  // (x, y, z, normal x) and (normal y, normal z, u, v) of each vertex
+        simd::load_columns(&in->position, kStride, a);
+        simd::load_columns(&in->normal.y, kStride, b);
+        const f8 &x = a[0], &y = a[1], &z = a[2];
+        // (Results through a reference: a lambda is not compiled for AVX2, and where it is not
+        // inlined, as in the unit tests' unoptimized build, a vector it returns goes astray.)
+        auto point = [&](const glm::mat4& m, int r, f8& p) { p = (m[0][r] * x + m[1][r] * y) + (m[2][r] * z + m[3][r]); };
+        out.fill(f8{});
+        if constexpr (Varyings::kWorld)
+            for (int r = 0; r < 3; ++r) point(u->model, r, out[size_t(Varyings::kWorldAt + r)]);
+        if constexpr (Varyings::kNormal) {
+            const glm::mat3& m = u->normal_matrix;
+            for (int r = 0; r < 3; ++r) out[size_t(Varyings::kNormalAt + r)] = (m[0][r] * a[3] + m[1][r] * b[0]) + m[2][r] * b[1];
+        }
+        if constexpr (Varyings::kUv) out[size_t(Varyings::kUvAt)] = b[2], out[size_t(Varyings::kUvAt + 1)] = b[3];
+        if constexpr (Varyings::kColor) {
+            f8 c[4];
+            simd::load_columns(&in->color, kStride, c);
+            for (size_t k = 0; k < 4; ++k) out[size_t(Varyings::kColorAt) + k] = c[k];
+        }
+        for (int r = 0; r < 4; ++r) point(u->mvp, r, clip[size_t(r)]);
+    }
+#endif
 
     bool fragment(const Varyings& in, const FragCoord& frag, glm::vec4& out) const {
         if constexpr (Model == Shading::Depth) {
