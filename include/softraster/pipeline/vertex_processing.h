@@ -128,14 +128,10 @@ template <int N>
 [[gnu::target("avx2")]] inline void finish_vertices8_avx2(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& planes, const Viewport& vp) {
     static_assert(offsetof(ClipInfo, X) == 16 && offsetof(ClipInfo, outcode) == 24 && offsetof(ClipInfo, finite) == 28 && sizeof(ClipInfo) == 32);
     static_assert(offsetof(ShadedVertex<N>, window) == 8 && sizeof(WindowPosition) == 16);
-    __m256i r[4];
-    for (int k = 0; k < 4; ++k)
-        r[k] = _mm256_castps_si256(_mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(&clip[k].position.x)), _mm_loadu_ps(&clip[k + 4].position.x), 1));
-    simd::transpose4x4_halves(r);
-    const simd::f8 x = simd::f8(_mm256_castsi256_ps(r[0])), y = simd::f8(_mm256_castsi256_ps(r[1])), z = simd::f8(_mm256_castsi256_ps(r[2])),
-                   w = simd::f8(_mm256_castsi256_ps(r[3]));
+    simd::f8 p[4];  // x, y, z, w
+    simd::load_columns(&clip->position, sizeof(ClipInfo), p);
     Finished8 f;
-    finish8(x, y, z, w, planes, vp, f);
+    finish8(p[0], p[1], p[2], p[3], planes, vp, f);
     const __m256 sub = _mm256_set1_ps(float(kSubpixelOne));
     const __m256i valid = __m256i(f.valid);
     const __m256i X = _mm256_and_si256(_mm256_cvtps_epi32(_mm256_mul_ps(__m256(f.wx), sub)), valid);
