@@ -13,8 +13,9 @@ namespace softraster::simd {
 // Eight records of four 32-bit fields, records k and k + 4 in the two 128-bit halves of
 // r[k], become four eight-lane vectors, r[f] holding field f of records 0-7 in lane order: a
 // 4x4 transpose in each half. It is its own inverse (lanes back to records). Vertex
-// processing reads clip positions and writes window positions this way, binning reads
-// triangle corners, the texture lookup a bilinear footprint's four texels.
+// processing reads vertices and clip positions and writes varyings and window positions this
+// way (load_columns, store_columns below), binning reads triangle corners, the texture lookup
+// a bilinear footprint's four texels.
 [[gnu::target("avx2")]] inline void transpose4x4_halves(__m256i (&r)[4]) {
     const __m256i t0 = _mm256_unpacklo_epi32(r[0], r[1]), t1 = _mm256_unpackhi_epi32(r[0], r[1]);
     const __m256i t2 = _mm256_unpacklo_epi32(r[2], r[3]), t3 = _mm256_unpackhi_epi32(r[2], r[3]);

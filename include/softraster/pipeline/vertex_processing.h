@@ -119,7 +119,8 @@ void finish_vertices8(ShadedVertex<N>* out, ClipInfo* clip, const ClipPlanes& pl
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 // The same with the clip positions read as eight 16-byte rows and the results written as
-// rows, each set of four turned from rows to lanes and back by simd::transpose4x4_halves,
+// rows, each set of four turned from rows to lanes and back (simd::load_columns,
+// store_columns, transpose4x4_halves),
 // with no branch per vertex: the window coordinates and snapped positions of the vertices
 // that are not valid are written too, which their readers never look at ("valid when the
 // outcode is 0").
@@ -136,10 +137,10 @@ template <int N>
     const __m256i valid = __m256i(f.valid);
     const __m256i X = _mm256_and_si256(_mm256_cvtps_epi32(_mm256_mul_ps(__m256(f.wx), sub)), valid);
     const __m256i Y = _mm256_and_si256(_mm256_cvtps_epi32(_mm256_mul_ps(__m256(f.wy), sub)), valid);
-    __m256i window[4] = {_mm256_castps_si256(__m256(f.wx)), _mm256_castps_si256(__m256(f.wy)), _mm256_castps_si256(__m256(f.wz)),
-                         _mm256_castps_si256(__m256(f.inv_w))};
+    const simd::f8 window[4] = {f.wx, f.wy, f.wz, f.inv_w};
+    simd::store_columns(window, 4, &out->window, sizeof(ShadedVertex<N>));
+    // The snapped position and flags go to two places, so their rows are made once here.
     __m256i tail[4] = {X, Y, __m256i(f.outcode), _mm256_and_si256(__m256i(f.finite), _mm256_set1_epi32(1))};  // (finite: a bool, then padding)
-    simd::transpose4x4_halves(window);
     simd::transpose4x4_halves(tail);
     for (int k = 0; k < 4; ++k)  // vertices k (low halves) and k + 4 (high halves)
         for (int h = 0; h < 2; ++h) {
@@ -147,7 +148,6 @@ template <int N>
             const __m128i t = h ? _mm256_extracti128_si256(tail[k], 1) : _mm256_castsi256_si128(tail[k]);
             _mm_storeu_si128(reinterpret_cast<__m128i*>(&clip[l].X), t);
             _mm_storel_epi64(reinterpret_cast<__m128i*>(&out[l].X), t);
-            _mm_storeu_si128(reinterpret_cast<__m128i*>(&out[l].window), h ? _mm256_extracti128_si256(window[k], 1) : _mm256_castsi256_si128(window[k]));
         }
 }
 #endif
