@@ -4,6 +4,7 @@
 #include "softraster/pipeline/simd.h"
 
 #if SOFTRASTER_HAS_AVX2_PATH
+#include <algorithm>
 #include <cstddef>
 
 #include <immintrin.h>
@@ -35,12 +36,12 @@ namespace softraster::simd {
     transpose4x4_halves(r);
     for (size_t f = 0; f < 4; ++f) out[f] = f8(_mm256_castsi256_ps(r[f]));
 }
-// The other way: the lanes of `count` vectors (1 to 4; the others are not read) into that many
-// consecutive floats of eight records `stride` bytes apart, writing nothing else.
-[[gnu::target("avx2")]] inline void store_columns(const f8 (&in)[4], int count, void* at, size_t stride) {
+// The other way: the lanes of vectors in[0..count) (count 1 to 4) into that many consecutive
+// floats of eight records `stride` bytes apart, writing nothing else.
+[[gnu::target("avx2")]] inline void store_columns(const f8* in, int count, void* at, size_t stride) {
     char* p = static_cast<char*>(at);
     __m256i r[4];
-    for (size_t f = 0; f < 4; ++f) r[f] = _mm256_castps_si256(__m256(in[f]));
+    for (int f = 0; f < 4; ++f) r[f] = _mm256_castps_si256(__m256(in[std::min(f, count - 1)]));  // (fields past count: not stored)
     transpose4x4_halves(r);
     for (size_t k = 0; k < 8; ++k) {
         const __m128i row = k < 4 ? _mm256_castsi256_si128(r[k]) : _mm256_extracti128_si256(r[k - 4], 1);

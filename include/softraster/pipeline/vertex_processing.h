@@ -178,12 +178,8 @@ SOFTRASTER_AVX2_TARGET void shade_vertices8(const S& shader, const typename S::V
     std::array<simd::f8, N> var;
     std::array<simd::f8, 4> position;
     shader.vertex_lanes(in, var, position);
-    for (size_t g = 0; g < N; g += 4) {
-        const simd::f8 four[4] = {var[g], var[std::min(g + 1, N - 1)], var[std::min(g + 2, N - 1)], var[std::min(g + 3, N - 1)]};
-        simd::store_columns(four, int(std::min<size_t>(4, N - g)), &out->var[g], sizeof(*out));
-    }
-    const simd::f8 p[4] = {position[0], position[1], position[2], position[3]};
-    simd::store_columns(p, 4, &clip->position, sizeof(*clip));
+    for (size_t g = 0; g < N; g += 4) simd::store_columns(&var[g], int(std::min<size_t>(4, N - g)), &out->var[g], sizeof(*out));
+    simd::store_columns(position.data(), 4, &clip->position, sizeof(*clip));
 }
 #endif
 
