@@ -106,7 +106,7 @@ Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpa
         tables_.log2_tiles_x[k] = int(std::bit_width(unsigned(l.tiles_x))) - 1;
     }
     pot_ = std::has_single_bit(unsigned(image.width)) && std::has_single_bit(unsigned(image.height));
-    storage_.assign(size_t(offset) + 15, 0u);
+    storage_.assign(size_t(offset) + 15 + 7, 0u);  // (15: the alignment below; 7: the footprint loads' reach, texture_lanes.h)
     aligned_ = (64 - reinterpret_cast<uintptr_t>(storage_.data()) % 64) % 64 / sizeof(uint32_t);
     uint32_t* out = storage_.data() + aligned_;
     // Tile by tile, apron and padding included: place (x, y) of tile (tx, ty) holds texel
