@@ -52,6 +52,22 @@ TEST(Simd, LoadAndStoreStopAtTheEndOfTheRow) {
     for (size_t i = 0; i < row.size(); ++i) EXPECT_EQ(row[i], i >= 8 && i < 11 ? -1.0f : float(i));
 }
 
+// Two rows of four (a 4x2 block): lanes 0-3 from the first, 4-7 from the second, and back,
+// nothing else touched.
+TEST(Simd, HalvesLoadAndStoreTwoRowsOfFour) {
+    std::array<float, 24> rows{};
+    for (size_t i = 0; i < rows.size(); ++i) rows[i] = float(i);
+    const int width = 10;
+    const f8 v = load_halves(rows.data() + 3, rows.data() + 3 + width);
+    for (int l = 0; l < kLanes; ++l) EXPECT_EQ(v[l], float(l < 4 ? 3 + l : 3 + width + l - 4)) << "lane " << l;
+    store_halves(rows.data() + 3, rows.data() + 3 + width, to_float(kLaneIndex) + 100.0f);
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const int at = int(i) - 3;
+        const bool first = at >= 0 && at < 4, second = at >= width && at < width + 4;
+        EXPECT_EQ(rows[i], first ? float(100 + at) : second ? float(100 + 4 + at - width) : float(i)) << "value " << i;
+    }
+}
+
 // Bytes (a stencil row) widened into lanes and narrowed back, each lane's low byte only, for
 // every number of bytes left in the row.
 TEST(Simd, BytesWidenAndNarrowStoppingAtTheEndOfTheRow) {

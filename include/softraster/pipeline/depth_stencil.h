@@ -20,7 +20,6 @@
 // copies, and the hidden-surface passes, run DepthTest alone.
 #pragma once
 #include <cstdint>
-#include <cstring>
 
 #include "softraster/pipeline/simd.h"
 #include "softraster/render_state.h"
@@ -70,16 +69,9 @@ struct DepthTest {
     // at depth[0, 4), lanes 4-7 at depth[width, width + 4).
     simd::i8 test_block(float* depth, int width, simd::f8 z, simd::i8 covered) const {
         if (!enabled) return covered;
-        constexpr size_t kHalf = sizeof(simd::f8) / 2;
-        simd::f8 stored;
-        std::memcpy(&stored, depth, kHalf);
-        std::memcpy(reinterpret_cast<char*>(&stored) + kHalf, depth + width, kHalf);
+        const simd::f8 stored = simd::load_halves(depth, depth + width);
         const simd::i8 pass = covered & depth_compare(func, z, stored);
-        if (write) {
-            const simd::f8 out = simd::select(pass, z, stored);  // (unchanged where none passes)
-            std::memcpy(depth, &out, kHalf);
-            std::memcpy(depth + width, reinterpret_cast<const char*>(&out) + kHalf, kHalf);
-        }
+        if (write) simd::store_halves(depth, depth + width, simd::select(pass, z, stored));  // (unchanged where none passes)
         return pass;
     }
 

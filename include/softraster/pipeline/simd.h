@@ -203,6 +203,23 @@ inline void store_group(T* p, int x, int width, V v) {
     }
 }
 
+// Eight floats from two places, four from each: lanes 0-3 from a, 4-7 from b (two rows of a
+// 4x2 block). Two 16-byte loads joined in a register: copied into the halves of a vector in
+// memory instead, the vector's one 32-byte load could not take its bytes from the two 16-byte
+// stores still on their way to the cache, and waited for them (docs/performance.md, "The 4x2
+// blocks' depth in registers"). And back: lanes 0-3 to a, 4-7 to b.
+inline f8 load_halves(const float* a, const float* b) {
+    f4 low, high;
+    std::memcpy(&low, a, sizeof low);
+    std::memcpy(&high, b, sizeof high);
+    return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+inline void store_halves(float* a, float* b, f8 v) {
+    const f4 low = __builtin_shufflevector(v, v, 0, 1, 2, 3), high = __builtin_shufflevector(v, v, 4, 5, 6, 7);
+    std::memcpy(a, &low, sizeof low);
+    std::memcpy(b, &high, sizeof high);
+}
+
 // Eight bytes of a row from p[x] on (of which p[x .. width) exist), each widened to a lane;
 // lanes past the end of the row read as zero. And back: each lane's low byte stored, except
 // past the end. (A stencil row: one 8-byte load or store and a few unpacks or packs, where
