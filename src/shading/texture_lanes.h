@@ -147,15 +147,15 @@ inline void load_footprints(const uint32_t* p, const i8& index, i8 (&texel)[4]) 
 // (c, d) texels 5 and 6, one tile row (5) on. A permute gathers the four, lanes k and k + 4
 // share a register, and simd::transpose4x4_halves turns the four registers into the
 // footprint's texels across the lanes: half the loads of one per row, and far cheaper here than
-// four gathers (docs/performance.md, "One load per footprint"). The load reads up to texel 7,
-// past the tile's last footprint only in the last tile (the texture's 1x1 level, whose one
-// footprint starts at its first texel), and the array has slack after it anyway (texture.cpp).
+// four gathers (docs/performance.md, "One load per footprint"). The load reads 8 texels from
+// the footprint's first; the array has slack for it after its end (texture.cpp).
 template <>
 [[gnu::target("avx2")]] inline void load_footprints<true>(const uint32_t* p, const i8& index, i8 (&texel)[4]) {
-    static_assert(Texture::kTileSide == 5);
+    constexpr int kRow = Texture::kTileSide;
+    static_assert(kRow + 1 < 8, "both rows of a footprint within one 32-byte load");
     alignas(32) uint32_t at[simd::kLanes];  // (unsigned: no sign extension per lane)
     _mm256_store_si256(reinterpret_cast<__m256i*>(at), __m256i(index));
-    const __m256i abcd = _mm256_setr_epi32(0, 1, 5, 6, 0, 1, 5, 6);
+    const __m256i abcd = _mm256_setr_epi32(0, 1, kRow, kRow + 1, 0, 1, kRow, kRow + 1);
     __m256i y[4];
     for (int k = 0; k < 4; ++k) {  // (a loop, not a lambda: a lambda here would not be compiled for AVX2)
         const __m256i low = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p + at[k])), abcd);

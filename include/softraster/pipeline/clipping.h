@@ -53,7 +53,7 @@ public:
     // so outcodes and the clipper agree on every side (ClipPlanes.DistancesAreTheDotProducts).
     template <class T>
     std::array<T, kCount> distances(T x, T y, T z, T w) const {
-        const T gwx = gx_ * w, gwy = gy_ * w;
+        const T gwx = planes_[2].w * w, gwy = planes_[4].w * w;  // (the sides' reach: x within gx w, y within gy w)
         return {z + w, w - z, x + gwx, gwx - x, y + gwy, gwy - y};
     }
     // Bit i set when p is outside plane i (Cohen–Sutherland style outcode).
@@ -67,10 +67,8 @@ public:
 private:
     ClipPlanes(float gx, float gy)
         : planes_{{glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, -1, 1), glm::vec4(1, 0, 0, gx), glm::vec4(-1, 0, 0, gx), glm::vec4(0, 1, 0, gy),
-                   glm::vec4(0, -1, 0, gy)}},
-          gx_(gx), gy_(gy) {}
+                   glm::vec4(0, -1, 0, gy)}} {}
     std::array<glm::vec4, kCount> planes_;
-    float gx_, gy_;  // the sides' reach: x and y within gx w and gy w
 };
 
 template <int N>
