@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Times two softraster programs on the same scenes, taking turns, and prints how much the
+second one's frame time differs from the first one's.
+
+  scripts/ab-compare.py OLD NEW [--rounds 6] [--threads 1] [--frames 20] SCENE ...
+
+OLD and NEW are two builds of the `softraster` program (say, main's and a change's, copied
+aside). A SCENE is a scene file, or the name of one in bench/scenes (bench_trilinear).
+Each round runs `PROGRAM bench SCENE --threads T --frames F --json` once for each program,
+OLD first in the odd rounds and NEW first in the even ones (AB BA AB ...), so that a machine
+whose speed drifts, or a cache the first run warms, favours neither. Per scene it prints
+the median of each program's frame times (each run's own median) and the median of the
+rounds' ratios NEW / OLD, which one slow spell does not move. Exit status 2 on bad
+arguments or a failed run."""
+import argparse, json, os, statistics, subprocess, sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def scene_path(name):
+    if os.path.isfile(name):
+        return name
+    named = os.path.join(ROOT, 'bench', 'scenes', name + ('' if name.endswith('.json') else '.json'))
+    if os.path.isfile(named):
+        return named
+    print('ab-compare: %s: no such scene file, nor one of that name in bench/scenes' % name, file=sys.stderr)
+    sys.exit(2)
+
+
+def frame_ms(program, scene, threads, frames):
+    cmd = [program, 'bench', scene, '--threads', str(threads), '--frames', str(frames), '--json']
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode != 0:
+        print('ab-compare: %s failed: %s' % (' '.join(cmd), r.stderr.strip()), file=sys.stderr)
+        sys.exit(2)
+    return float(json.loads(r.stdout.strip().splitlines()[-1])['median_ms'])
+
+
+def first_in_round(k):
+    """Which program runs first in round k (0-based): OLD in rounds 0, 2, 4, ..."""
+    return 'old' if k % 2 == 0 else 'new'
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split('\n\n')[0], epilog='The two take turns at running first (see the header of the script).')
+    p.add_argument('old', help='the first program (the baseline)')
+    p.add_argument('new', help='the second program (the change)')
+    p.add_argument('scenes', nargs='+', metavar='SCENE', help='a scene file, or a name in bench/scenes')
+    p.add_argument('--rounds', type=int, default=6, help='rounds per scene (default 6)')
+    p.add_argument('--threads', type=int, default=1, help='threads of each run (default 1)')
+    p.add_argument('--frames', type=int, default=20, help='timed frames of each run (default 20)')
+    a = p.parse_args()
+    for program in (a.old, a.new):
+        if not (os.path.isfile(program) and os.access(program, os.X_OK)):
+            p.error('%s: not an executable file' % program)
+    if a.rounds < 1 or a.threads < 1 or a.frames < 1:
+        p.error('--rounds, --threads and --frames must be at least 1')
+    scenes = [scene_path(s) for s in a.scenes]
+    for scene in scenes:
+        times = {'old': [], 'new': []}
+        for k in range(a.rounds):
+            order = ('old', 'new') if first_in_round(k) == 'old' else ('new', 'old')
+            for which in order:
+                times[which].append(frame_ms(a.old if which == 'old' else a.new, scene, a.threads, a.frames))
+        old, new = statistics.median(times['old']), statistics.median(times['new'])
+        ratio = statistics.median(n / o for o, n in zip(times['old'], times['new']))
+        print('%s: old %.2f ms, new %.2f ms (%+.1f%%; median of the rounds\' ratios %+.1f%%)' %
+              (os.path.basename(scene), old, new, (new / old - 1) * 100, (ratio - 1) * 100))
+        print('  old: %s\n  new: %s' % (' '.join('%.2f' % t for t in times['old']), ' '.join('%.2f' % t for t in times['new'])))
+
+
+if __name__ == '__main__':
+    main()
