@@ -63,9 +63,10 @@ void angles(const f8& y, const f8& x, const f8& c, f8& atan2_yx, f8& acos_c) {
 }
 #if SOFTRASTER_HAS_AVX2_PATH
 // (sleef.h declares its AVX functions only where the whole file is compiled for AVX; here
-// only the AVX2 copy is.)
-extern "C" __m256 Sleef_cinz_atan2f8_u10avx(__m256, __m256);
-extern "C" __m256 Sleef_cinz_acosf8_u10avx(__m256);
+// only the AVX2 copy is. Declared for AVX: clang refuses a call that passes 32-byte vectors to
+// a function compiled without it, as their ABI differs.)
+extern "C" [[gnu::target("avx")]] __m256 Sleef_cinz_atan2f8_u10avx(__m256, __m256);
+extern "C" [[gnu::target("avx")]] __m256 Sleef_cinz_acosf8_u10avx(__m256);
 template <>
 [[gnu::target("avx2")]] void angles<true>(const f8& y, const f8& x, const f8& c, f8& atan2_yx, f8& acos_c) {
     atan2_yx = f8(Sleef_cinz_atan2f8_u10avx(__m256(y), __m256(x)));
