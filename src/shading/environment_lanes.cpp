@@ -123,8 +123,13 @@ void split(const f8& x, f8& fraction, i8& whole) {
 }
 
 // sample_bilinear on each lane's level l of the specular chain (GL_REPEAT across, clamped down).
+// Always inline: clang 14's flatten inlines only the entry point's own calls, and with this
+// function left out of line (so compiled without AVX) its optimized build's AVX2 copy gave
+// wrong lanes (EnvironmentLighting.EightLanesEqualOneAtATimeOnBothPaths); neither its
+// sanitizers nor the out-of-line copy's own calls, each tried alone, showed why. GCC's
+// flatten inlines it anyway.
 template <bool Wide>
-vec3x8 specular_bilinear(const EnvironmentLighting& e, const i8& l, const f8& u, const f8& v) {
+[[gnu::always_inline]] inline vec3x8 specular_bilinear(const EnvironmentLighting& e, const i8& l, const f8& u, const f8& v) {
     const i8 w = EnvironmentLighting::kBaseWidth >> l, h = EnvironmentLighting::kBaseHeight >> l;
     constexpr auto at = [](int k) { return EnvironmentLighting::level_offset(std::min(k, EnvironmentLighting::kLevels - 1)); };
     const i8 offsets = {at(0), at(1), at(2), at(3), at(4), at(5), at(6), at(7)};
