@@ -11,10 +11,14 @@ OLD first in the odd rounds and NEW first in the even ones (AB BA AB ...), so th
 whose speed drifts, or a cache the first run warms, favours neither. Per scene it prints
 the median of each program's frame times (each run's own median) and the median of the
 rounds' ratios NEW / OLD, which one slow spell does not move. Exit status 2 on bad
-arguments or a failed run."""
-import argparse, json, os, statistics, subprocess, sys
+arguments, 1 on a failed run (as bench-compare.py)."""
+import argparse, importlib.util, os, statistics, sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# The runs and their JSON as bench-compare.py takes them (its run_json).
+_spec = importlib.util.spec_from_file_location('bench_compare', os.path.join(ROOT, 'scripts', 'bench-compare.py'))
+bench_compare = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(bench_compare)
 
 
 def scene_path(name):
@@ -28,12 +32,7 @@ def scene_path(name):
 
 
 def frame_ms(program, scene, threads, frames):
-    cmd = [program, 'bench', scene, '--threads', str(threads), '--frames', str(frames), '--json']
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        print('ab-compare: %s failed: %s' % (' '.join(cmd), r.stderr.strip()), file=sys.stderr)
-        sys.exit(2)
-    return float(json.loads(r.stdout.strip().splitlines()[-1])['median_ms'])
+    return float(bench_compare.run_json([program, 'bench', scene, '--threads', str(threads), '--frames', str(frames), '--json'])['median_ms'])
 
 
 def first_in_round(k):
