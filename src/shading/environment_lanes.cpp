@@ -125,9 +125,9 @@ void split(const f8& x, f8& fraction, i8& whole) {
 // sample_bilinear on each lane's level l of the specular chain (GL_REPEAT across, clamped down).
 // Always inline: clang 14's flatten inlines only the entry point's own calls, and with this
 // function left out of line (so compiled without AVX) its optimized build's AVX2 copy gave
-// wrong lanes (EnvironmentLighting.EightLanesEqualOneAtATimeOnBothPaths); neither its
-// sanitizers nor the out-of-line copy's own calls, each tried alone, showed why. GCC's
-// flatten inlines it anyway.
+// wrong lanes (EnvironmentLighting.EightLanesEqualOneAtATimeOnBothPaths). Why is not known:
+// its sanitizer build passes, and the copy's AVX2 calls all replaced by the generic ones still
+// failed. GCC's flatten inlines it anyway.
 template <bool Wide>
 [[gnu::always_inline]] inline vec3x8 specular_bilinear(const EnvironmentLighting& e, const i8& l, const f8& u, const f8& v) {
     const i8 w = EnvironmentLighting::kBaseWidth >> l, h = EnvironmentLighting::kBaseHeight >> l;
