@@ -3,7 +3,8 @@
 #   scripts/fuzz.sh TARGET SECONDS      e.g. scripts/fuzz.sh model_gltf 600
 #   scripts/fuzz.sh --list              the targets (tests/fuzz/fuzz_targets.h)
 # Builds build-fuzz/ with clang, starts from tests/fuzz/corpus/TARGET plus, for model
-# targets, the matching files of Debian's assimp-testmodels, and runs for SECONDS. Inputs
+# targets, the matching files of Debian's assimp-testmodels (for scene, mesh_obj and
+# mesh_ply, the repository's own scenes and meshes), and runs for SECONDS. Inputs
 # that crash, leak, trip a sanitizer or take over 20 s are copied to
 # tests/fuzz/corpus/TARGET/ as crash-*, leak-*, timeout-*: fix the bug, keep the file (ctest's
 # fuzz.replay runs every file there), commit both. Exit code 1 when something was found.
@@ -28,6 +29,13 @@ cp -n tests/fuzz/corpus/"$target"/* "$work"/ 2>/dev/null || true
 case $target in
   model_*) ext=${target#model_}
            find /usr/share/assimp/models -iname "*.$ext" -size -200k -exec cp -n {} "$work"/ \; 2>/dev/null || true ;;
+  # Our own feature scenes whose pictures are at most 256x256 (bigger ones draw slowly under
+  # the sanitizers), and our OBJ and PLY files for the mesh loaders.
+  scene) python3 -c 'import json, shutil, sys
+for f in sys.argv[2:]:
+    i = json.load(open(f)).get("image", {})
+    if i.get("width", 0) * i.get("height", 0) <= 256 * 256: shutil.copy(f, sys.argv[1])' "$work" tests/scenes/*.json ;;
+  mesh_obj|mesh_ply) find tests bench -name "*.${target#mesh_}" -size -200k -exec cp -n {} "$work"/ \; ;;
 esac
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/fuzz/lsan.supp
