@@ -35,11 +35,6 @@ def frame_ms(program, scene, threads, frames):
     return float(bench_compare.run_json([program, 'bench', scene, '--threads', str(threads), '--frames', str(frames), '--json'])['median_ms'])
 
 
-def first_in_round(k):
-    """Which program runs first in round k (0-based): OLD in rounds 0, 2, 4, ..."""
-    return 'old' if k % 2 == 0 else 'new'
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__.split('\n\n')[0], epilog='The two take turns at running first (see the header of the script).')
     p.add_argument('old', help='the first program (the baseline)')
@@ -56,11 +51,10 @@ def main():
         p.error('--rounds, --threads and --frames must be at least 1')
     scenes = [scene_path(s) for s in a.scenes]
     for scene in scenes:
-        times = {'old': [], 'new': []}
+        programs, times = {'old': a.old, 'new': a.new}, {'old': [], 'new': []}
         for k in range(a.rounds):
-            order = ('old', 'new') if first_in_round(k) == 'old' else ('new', 'old')
-            for which in order:
-                times[which].append(frame_ms(a.old if which == 'old' else a.new, scene, a.threads, a.frames))
+            for which in (('old', 'new') if k % 2 == 0 else ('new', 'old')):  # OLD first in rounds 0, 2, 4, ...
+                times[which].append(frame_ms(programs[which], scene, a.threads, a.frames))
         old, new = statistics.median(times['old']), statistics.median(times['new'])
         ratio = statistics.median(n / o for o, n in zip(times['old'], times['new']))
         print('%s: old %.2f ms, new %.2f ms (%+.1f%%; median of the rounds\' ratios %+.1f%%)' %

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """ab_compare_test.py SCRIPT WORKDIR: scripts/ab-compare.py runs the two programs in turns
 (old first, then new first, ...), as many rounds as asked, and reports the medians and the
-median of the rounds' ratios; a bad scene or program is one line on stderr and exit 2.
+median of the rounds' ratios; a bad scene or program is exit 2 with its error on stderr
+(argparse adds its usage line for a program).
 Two stand-in programs answer `bench ... --json` with set frame times and log each call."""
 import os, stat, subprocess, sys
 
