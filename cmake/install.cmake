@@ -3,11 +3,13 @@
 #   bin/softraster                               the program
 #   lib/<arch>/libsoftraster.so.0.1               the library (and the .so link, for -dev)
 #   lib/<arch>/softraster/libsoftraster_oiio.so   the OpenImageIO module it opens on demand
+#   lib/<arch>/softraster/libsoftraster_video.so  the FFmpeg module, likewise (src/io/modules.h)
 #   include/softraster/                          the public headers
 #   lib/<arch>/cmake/softraster/                 softrasterConfig.cmake: softraster::softraster
 #   lib/<arch>/pkgconfig/softraster.pc           pkg-config --cflags --libs softraster
 #
-# Components, one per Debian package (cmake/package.cmake): bin, lib, oiio (the module) and dev.
+# Components, one per Debian package (cmake/package.cmake): bin, lib, oiio and video (the
+# modules) and dev.
 include(CMakePackageConfigHelpers)
 
 install(TARGETS softraster RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT bin)
@@ -15,6 +17,7 @@ install(TARGETS softraster_shared EXPORT softrasterTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT lib NAMELINK_COMPONENT dev
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS softraster_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/softraster COMPONENT oiio)
+install(TARGETS softraster_video LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/softraster COMPONENT video)
 install(DIRECTORY include/softraster DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT dev)
 
 set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/softraster)

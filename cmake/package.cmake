@@ -7,6 +7,9 @@
 #                           textures: recommended, not required, because OpenImageIO brings
 #                           hundreds of libraries (OpenCV, GDAL...) that a server or a
 #                           container drawing glTF files does without
+#   libsoftraster0.1-video  its FFmpeg module, for MP4 and WebM videos (`animate`):
+#                           recommended, for the same reason (FFmpeg brings some 130
+#                           libraries; GIFs and numbered pictures need no module)
 #   libsoftraster-dev       headers, the .so link, the CMake package and softraster.pc
 #   python3-softraster      the Python module (when pybind11 is installed)
 # The library's package is named after its SONAME (libsoftraster.so.0.1, CMakeLists.txt).
@@ -24,7 +27,7 @@ set(CPACK_PACKAGING_INSTALL_PREFIX ${CMAKE_INSTALL_PREFIX})
 set(CPACK_STRIP_FILES ON)
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_DEBIAN_ENABLE_COMPONENT_DEPENDS ON)  # (CPACK_COMPONENT_*_DEPENDS become Depends)
-set(CPACK_COMPONENTS_ALL bin lib oiio dev)
+set(CPACK_COMPONENTS_ALL bin lib oiio video dev)
 if(TARGET softraster_python)
   list(APPEND CPACK_COMPONENTS_ALL python)
 endif()
@@ -43,7 +46,7 @@ and thumbnails with no GPU and no display. Its pictures match Mesa's
 llvmpipe. This package has the program, its man pages, bash completion,
 and a thumbnailer that shows 3D models in file managers.")
 # (The program links the library's static archive: it needs no other package of ours.)
-set(CPACK_DEBIAN_BIN_PACKAGE_RECOMMENDS "libsoftraster${soname_version}-oiio (= ${PROJECT_VERSION})")
+set(CPACK_DEBIAN_BIN_PACKAGE_RECOMMENDS "libsoftraster${soname_version}-oiio (= ${PROJECT_VERSION}), libsoftraster${soname_version}-video (= ${PROJECT_VERSION})")
 
 set(CPACK_DEBIAN_LIB_PACKAGE_NAME libsoftraster${soname_version})
 set(CPACK_DEBIAN_LIB_PACKAGE_SECTION libs)
@@ -51,7 +54,7 @@ set(CPACK_COMPONENT_LIB_DESCRIPTION "3D rasterizer on the CPU - shared library
 softraster is a 3D rasterizer that runs the whole graphics pipeline on
 the CPU, with pictures that match Mesa's llvmpipe. This package has the
 shared library.")
-set(CPACK_DEBIAN_LIB_PACKAGE_RECOMMENDS "libsoftraster${soname_version}-oiio (= ${PROJECT_VERSION})")
+set(CPACK_DEBIAN_LIB_PACKAGE_RECOMMENDS "libsoftraster${soname_version}-oiio (= ${PROJECT_VERSION}), libsoftraster${soname_version}-video (= ${PROJECT_VERSION})")
 # ldconfig by trigger, as Debian wants it (CPack also writes postinst and postrm that run it).
 set(CPACK_DEBIAN_LIB_PACKAGE_CONTROL_EXTRA ${PROJECT_SOURCE_DIR}/packaging/triggers)
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)  # (and the ldconfig trigger)
@@ -64,6 +67,14 @@ softraster is a 3D rasterizer that runs the whole graphics pipeline on
 the CPU. This package has the module through which it reads SGI, DDS,
 TIFF, WebP, HDR and EXR textures with OpenImageIO; PNG, JPEG, TGA and
 BMP need no module.")
+
+set(CPACK_DEBIAN_VIDEO_PACKAGE_NAME libsoftraster${soname_version}-video)
+set(CPACK_DEBIAN_VIDEO_PACKAGE_SECTION libs)
+set(CPACK_COMPONENT_VIDEO_DESCRIPTION "3D rasterizer on the CPU - FFmpeg videos
+softraster is a 3D rasterizer that runs the whole graphics pipeline on
+the CPU. This package has the module through which it writes MP4 (H.264)
+and WebM (VP9) videos with FFmpeg; GIFs and numbered pictures need no
+module.")
 
 set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-softraster)
 set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)

@@ -17,13 +17,11 @@
 
 extern "C" {
 #include <gif_lib.h>
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/log.h>
-#include <libavutil/opt.h>
-#include <libswscale/swscale.h>
 #include <libimagequant.h>
 }
+
+#include "io/modules.h"
+#include "io/video_module.h"
 
 namespace softraster {
 namespace {
@@ -176,117 +174,43 @@ private:
     int frames_ = 0;
 };
 
-// ---- video: FFmpeg's libavcodec encodes, libavformat writes the container
+// ---- video: FFmpeg's libavcodec encodes, libavformat writes the container, in the video
+// module (video_module.h), opened with the first video
+
+const SoftrasterVideoApi& video_api(const std::filesystem::path& out) {
+    static const auto api = reinterpret_cast<SoftrasterVideoApiFn>(module_entry(SOFTRASTER_VIDEO_MODULE, SOFTRASTER_VIDEO_API));
+    if (!api)
+        throw InputError(out.string() + ": writing a video needs softraster's FFmpeg module (" SOFTRASTER_VIDEO_MODULE
+                                        "), which was not found; set SOFTRASTER_MODULE_DIR to its folder");
+    return *api();
+}
 
 class VideoWriter final : public AnimationWriter {
 public:
-    VideoWriter(const std::filesystem::path& out, int width, int height, int fps) : file_(out), width_(width), height_(height) {
-        av_log_set_level(AV_LOG_ERROR);  // (the encoders' statistics are not for the user)
+    VideoWriter(const std::filesystem::path& out, int width, int height, int fps) : file_(out), api_(video_api(out)) {
         if (width % 2 || height % 2)
             throw InputError(out.string() + ": a video needs an even width and height (got " + std::to_string(width) + "x" +
                              std::to_string(height) + ")");
-        const bool webm = lower_extension(out) == ".webm";
-        const AVCodec* codec = webm ? avcodec_find_encoder_by_name("libvpx-vp9") : avcodec_find_encoder_by_name("libx264");
-        if (!codec) codec = avcodec_find_encoder(webm ? AV_CODEC_ID_VP8 : AV_CODEC_ID_MPEG4);
-        if (!codec) throw std::runtime_error(out.string() + ": FFmpeg has no encoder for this format");
-        if (avformat_alloc_output_context2(&av_.format, nullptr, webm ? "webm" : "mp4", file_.temp().c_str()) < 0 || !av_.format)
-            throw std::runtime_error(out.string() + ": FFmpeg cannot write this format");
-        stream_ = avformat_new_stream(av_.format, nullptr);
-        av_.codec = avcodec_alloc_context3(codec);
-        if (!stream_ || !av_.codec) throw std::runtime_error(out.string() + ": out of memory");
-        av_.codec->width = width;
-        av_.codec->height = height;
-        av_.codec->time_base = AVRational{1, fps};
-        av_.codec->framerate = AVRational{fps, 1};
-        av_.codec->pix_fmt = AV_PIX_FMT_YUV420P;
-        av_.codec->gop_size = 2 * fps;
-        // No B-frames: frames then leave the encoder in order, and MP4's edit list (which
-        // reorder delay needs) would cut the last frame short in some players and probes.
-        av_.codec->max_b_frames = 0;
-        av_.codec->colorspace = AVCOL_SPC_SMPTE170M;
-        av_.codec->color_range = AVCOL_RANGE_MPEG;
-        if (av_.format->oformat->flags & AVFMT_GLOBALHEADER) av_.codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-        if (codec->id == AV_CODEC_ID_H264) {
-            av_opt_set(av_.codec->priv_data, "preset", "medium", 0);
-            av_opt_set(av_.codec->priv_data, "crf", "18", 0);
-        } else if (codec->id == AV_CODEC_ID_VP9 || codec->id == AV_CODEC_ID_VP8) {
-            av_opt_set(av_.codec->priv_data, "crf", "24", 0);
-            av_.codec->bit_rate = 0;
-            av_opt_set(av_.codec->priv_data, "deadline", "good", 0);
-            av_opt_set(av_.codec->priv_data, "cpu-used", "4", 0);
-        } else {
-            av_.codec->bit_rate = int64_t(width) * height * fps / 4;
-        }
-        if (avcodec_open2(av_.codec, codec, nullptr) < 0) throw std::runtime_error(out.string() + ": cannot open the encoder");
-        if (avcodec_parameters_from_context(stream_->codecpar, av_.codec) < 0) throw std::runtime_error(out.string() + ": encoder parameters");
-        stream_->time_base = av_.codec->time_base;
-        if (avio_open(&av_.format->pb, file_.temp().c_str(), AVIO_FLAG_WRITE) < 0) throw std::runtime_error(out.string() + ": cannot write");
-        if (avformat_write_header(av_.format, nullptr) < 0) throw std::runtime_error(out.string() + ": cannot write the header");
-        av_.frame = av_frame_alloc();
-        av_.packet = av_packet_alloc();
-        if (!av_.frame || !av_.packet) throw std::runtime_error(out.string() + ": out of memory");
-        av_.frame->format = av_.codec->pix_fmt;
-        av_.frame->width = width;
-        av_.frame->height = height;
-        if (av_frame_get_buffer(av_.frame, 0) < 0) throw std::runtime_error(out.string() + ": out of memory");
-        av_.scale = sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr, nullptr);
-        if (!av_.scale) throw std::runtime_error(out.string() + ": cannot convert RGBA to YUV");
+        video_.reset(api_.open(file_.temp().c_str(), out.c_str(), lower_extension(out) == ".webm", width, height, fps, error_, sizeof error_));
+        if (!video_) throw std::runtime_error(error_);
     }
     void add(const Image& frame) override {
-        if (av_frame_make_writable(av_.frame) < 0) throw std::runtime_error(file_.temp().string() + ": frame buffer");
-        const uint8_t* source[1] = {reinterpret_cast<const uint8_t*>(frame.pixels.data())};
-        const int stride[1] = {4 * width_};
-        sws_scale(av_.scale, source, stride, 0, height_, av_.frame->data, av_.frame->linesize);
-        av_.frame->pts = next_pts_++;
-        encode(av_.frame);
+        if (!api_.add(video_.get(), reinterpret_cast<const uint8_t*>(frame.pixels.data()), error_, sizeof error_)) throw std::runtime_error(error_);
     }
     void finish() override {
-        encode(nullptr);
-        if (av_write_trailer(av_.format) < 0) throw std::runtime_error(file_.temp().string() + ": cannot finish the file");
-        avio_closep(&av_.format->pb);
+        if (!api_.finish(video_.get(), error_, sizeof error_)) throw std::runtime_error(error_);
         file_.commit();
     }
 
 private:
-    void encode(AVFrame* frame) {
-        if (avcodec_send_frame(av_.codec, frame) < 0) throw std::runtime_error(file_.temp().string() + ": the encoder refused a frame");
-        for (;;) {
-            const int r = avcodec_receive_packet(av_.codec, av_.packet);
-            if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return;
-            if (r < 0) throw std::runtime_error(file_.temp().string() + ": encoding failed");
-            av_.packet->duration = 1;  // one frame (some encoders leave it 0: MP4 then ends at the last frame's start)
-            av_packet_rescale_ts(av_.packet, av_.codec->time_base, stream_->time_base);
-            av_.packet->stream_index = stream_->index;
-            if (av_interleaved_write_frame(av_.format, av_.packet) < 0) throw std::runtime_error(file_.temp().string() + ": cannot write a frame");
-        }
-    }
-    // FFmpeg's objects, freed however the writer ends (a throw in the constructor included:
-    // then only this member's destructor runs, not the writer's).
-    struct Contexts {
-        AVFormatContext* format = nullptr;
-        AVCodecContext* codec = nullptr;
-        AVFrame* frame = nullptr;
-        AVPacket* packet = nullptr;
-        SwsContext* scale = nullptr;
-        Contexts() = default;
-        Contexts(const Contexts&) = delete;
-        Contexts& operator=(const Contexts&) = delete;
-        ~Contexts() {
-            sws_freeContext(scale);
-            av_packet_free(&packet);
-            av_frame_free(&frame);
-            avcodec_free_context(&codec);
-            if (format) {
-                if (format->pb) avio_closep(&format->pb);
-                avformat_free_context(format);
-            }
-        }
+    struct Close {
+        void (*close)(SoftrasterVideo*);
+        void operator()(SoftrasterVideo* v) const { close(v); }
     };
-    PendingFile file_;
-    int width_, height_;
-    Contexts av_;
-    AVStream* stream_ = nullptr;  // (owned by av_.format)
-    int64_t next_pts_ = 0;
+    PendingFile file_;  // (declared first: the video is closed before an unfinished file is removed)
+    const SoftrasterVideoApi& api_;
+    char error_[512] = {};
+    std::unique_ptr<SoftrasterVideo, Close> video_{nullptr, Close{api_.close}};
 };
 
 }  // namespace

@@ -7,14 +7,13 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
-#include <mutex>
 #include <system_error>
 #include <vector>
 
-#include <dlfcn.h>
 #include <stb_image.h>
 #include <zlib.h>
 
+#include "io/modules.h"
 #include "io/oiio_module.h"
 #include "io/read_file.h"
 #include "softraster/error.h"
@@ -133,37 +132,9 @@ void check_complete(std::string_view b, Format f, const std::string& name) {
 constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
 constexpr int kMaxSide = 65536;
 
-// The OpenImageIO module's decode function, opened on first use (oiio_module.h): from
-// $SOFTRASTER_MODULE_DIR, beside the program and where it is installed relative to the
-// program, beside the shared library and in its softraster/ folder (where `cmake --install`
-// and the package put it, wherever the prefix is), then the system's library path.
+// The OpenImageIO module's decode function, opened on first use (oiio_module.h, modules.h).
 SoftrasterDecodeFn oiio_decoder(const std::string& name) {
-    static SoftrasterDecodeFn decode = nullptr;
-    static std::once_flag once;
-    std::call_once(once, [] {
-        std::vector<std::string> dirs;
-        if (const char* env = std::getenv("SOFTRASTER_MODULE_DIR")) dirs.emplace_back(env);
-        std::error_code ec;
-        const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-        if (!ec) {
-            dirs.push_back(exe.parent_path().string());
-            dirs.push_back((exe.parent_path() / SOFTRASTER_MODULE_DIR_FROM_PROGRAM).lexically_normal().string());  // (installed)
-        }
-        Dl_info self{};
-        if (dladdr(reinterpret_cast<const void*>(&oiio_decoder), &self) && self.dli_fname) {
-            const std::filesystem::path library = std::filesystem::absolute(self.dli_fname, ec).parent_path();
-            dirs.push_back(library.string());
-            dirs.push_back((library / "softraster").string());
-        }
-        dirs.emplace_back();
-        for (const std::string& dir : dirs) {
-            const std::string file = dir.empty() ? SOFTRASTER_OIIO_MODULE : dir + "/" + SOFTRASTER_OIIO_MODULE;
-            if (void* module = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL)) {
-                decode = reinterpret_cast<SoftrasterDecodeFn>(dlsym(module, SOFTRASTER_OIIO_DECODE));
-                if (decode) return;
-            }
-        }
-    });
+    static const auto decode = reinterpret_cast<SoftrasterDecodeFn>(module_entry(SOFTRASTER_OIIO_MODULE, SOFTRASTER_OIIO_DECODE));
     if (!decode)
         throw InputError(name + ": this picture format needs softraster's OpenImageIO module (" SOFTRASTER_OIIO_MODULE
                                 "), which was not found; set SOFTRASTER_MODULE_DIR to its folder");

@@ -1,5 +1,5 @@
-// The OpenImageIO decoder lives in a module of its own (libsoftraster_oiio.so), opened the
-// first time a picture in one of its formats is read. Linking OpenImageIO into the program
+// The OpenImageIO decoder lives in a module of its own (libsoftraster_oiio.so, modules.h),
+// opened the first time a picture in one of its formats is read. Linking OpenImageIO into the program
 // would load Debian's build of it with all its dependencies (about 260 shared libraries:
 // OpenCV, GDAL, FFmpeg...) at every start: 0.3 s and 130 MB before main(), for every
 // command, including the many that read no SGI, DDS, TIFF, WebP, HDR or EXR picture.

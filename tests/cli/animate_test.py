@@ -132,6 +132,20 @@ for out, what in [('nodir/x.mp4', 'does not exist'), ('nodir/x.gif', 'does not e
     r = run(['animate', MODEL, '-o', out] + COMMON)
     check('animate -o %s' % out, r.returncode == 2 and what in r.stderr and out.split('/')[0 if out[0] != '/' else 2] in r.stderr
           and len(r.stderr.strip().splitlines()) == 1 and not os.path.exists(os.path.join(work, out)), '%d %r' % (r.returncode, r.stderr))
+# The program alone, without its FFmpeg module (src/io/modules.h): a video is refused with one
+# line that names the module and how to point at it, exit 2 and no file; a GIF needs no module.
+alone = os.path.join(work, 'alone')
+os.makedirs(alone)
+shutil.copy2(exe, alone)
+env = {k: v for k, v in os.environ.items() if k not in ('SOFTRASTER_MODULE_DIR', 'LD_LIBRARY_PATH')}
+r = subprocess.run([os.path.join(alone, os.path.basename(exe)), 'animate', MODEL, '-o', 'alone.mp4'] + COMMON,
+                   capture_output=True, text=True, timeout=300, cwd=work, env=env)
+check('animate without the video module', r.returncode == 2 and 'libsoftraster_video.so' in r.stderr and 'SOFTRASTER_MODULE_DIR' in r.stderr
+      and len(r.stderr.strip().splitlines()) == 1 and not os.path.exists(os.path.join(work, 'alone.mp4'))
+      and not os.path.exists(os.path.join(work, 'alone.mp4.part')), '%d %r' % (r.returncode, r.stderr))
+r = subprocess.run([os.path.join(alone, os.path.basename(exe)), 'animate', MODEL, '-o', 'alone.gif'] + COMMON,
+                   capture_output=True, text=True, timeout=300, cwd=work, env=env)
+check('a GIF without the video module', r.returncode == 0 and os.path.exists(os.path.join(work, 'alone.gif')), r.stderr)
 r = run(['animate', 'missing.glb', '-o', 'm.gif'])
 check('animate missing model', r.returncode == 2 and 'missing.glb' in r.stderr and not os.path.exists(os.path.join(work, 'm.gif')), r.stderr)
 

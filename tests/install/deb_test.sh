@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # deb_test.sh BUILD WORK: the Debian packages from `cpack -G DEB` (as scripts/package.sh makes
-# them): split in four, their dependencies from dpkg-shlibdeps and resolvable from Debian's
+# them): split in five, their dependencies from dpkg-shlibdeps and resolvable from Debian's
 # archive, the files each holds, and no lintian errors.
 set -euo pipefail
 build=$1 work=$2
@@ -9,20 +9,27 @@ fail() { echo "FAIL: $*"; exit 1; }
 (cd "$build" && cpack -G DEB -B "$work" >"$work/cpack.log" 2>&1) || { tail -20 "$work/cpack.log"; fail "cpack"; }
 version=$(sed -n 's/^CMAKE_PROJECT_VERSION:STATIC=//p' "$build/CMakeCache.txt")
 bin=$work/softraster_${version}_amd64.deb lib=$work/libsoftraster0.1_${version}_amd64.deb dev=$work/libsoftraster-dev_${version}_amd64.deb
-oiio=$work/libsoftraster0.1-oiio_${version}_amd64.deb
-for deb in "$bin" "$lib" "$oiio" "$dev"; do [ -f "$deb" ] || fail "no $(basename "$deb") (made: $(ls "$work"/*.deb 2>/dev/null | xargs -n1 basename))"; done
+oiio=$work/libsoftraster0.1-oiio_${version}_amd64.deb video=$work/libsoftraster0.1-video_${version}_amd64.deb
+for deb in "$bin" "$lib" "$oiio" "$video" "$dev"; do [ -f "$deb" ] || fail "no $(basename "$deb") (made: $(ls "$work"/*.deb 2>/dev/null | xargs -n1 basename))"; done
 
 field() { dpkg-deb -f "$1" "$2"; }
-# The program has the library linked in (and recommends the module); every package's Debian
+# The program has the library linked in (and recommends the modules); every package's Debian
 # dependencies are found.
 if field "$bin" Depends | grep -q "libsoftraster0.1"; then fail "softraster depends on the library: $(field "$bin" Depends)"; fi
 field "$bin" Recommends | grep -q "libsoftraster0.1-oiio (= $version)" || fail "softraster Recommends: $(field "$bin" Recommends)"
+field "$bin" Recommends | grep -q "libsoftraster0.1-video (= $version)" || fail "softraster Recommends: $(field "$bin" Recommends)"
 field "$bin" Depends | grep -q "libassimp5" || fail "softraster Depends lacks what dpkg-shlibdeps finds: $(field "$bin" Depends)"
 field "$lib" Depends | grep -q "libassimp5" || fail "libsoftraster0.1 Depends: $(field "$lib" Depends)"
-# OpenImageIO (hundreds of libraries) only through the module's package, which the library recommends.
-if field "$lib" Depends | grep -q "openimageio"; then fail "libsoftraster0.1 depends on OpenImageIO"; fi
+# OpenImageIO and FFmpeg (hundreds of libraries) only through the modules' packages, which the
+# program and the library recommend.
+for deb in "$bin" "$lib"; do
+  if field "$deb" Depends | grep -q "openimageio"; then fail "$(basename "$deb") depends on OpenImageIO"; fi
+  if field "$deb" Depends | grep -q "libavcodec"; then fail "$(basename "$deb") depends on FFmpeg: $(field "$deb" Depends)"; fi
+done
 field "$lib" Recommends | grep -q "libsoftraster0.1-oiio (= $version)" || fail "libsoftraster0.1 Recommends: $(field "$lib" Recommends)"
+field "$lib" Recommends | grep -q "libsoftraster0.1-video (= $version)" || fail "libsoftraster0.1 Recommends: $(field "$lib" Recommends)"
 field "$oiio" Depends | grep -q "libopenimageio" || fail "libsoftraster0.1-oiio Depends: $(field "$oiio" Depends)"
+field "$video" Depends | grep -q "libavcodec" || fail "libsoftraster0.1-video Depends: $(field "$video" Depends)"
 field "$dev" Depends | grep -q "libglm-dev" || fail "libsoftraster-dev Depends: $(field "$dev" Depends)"
 field "$dev" Depends | grep -q "libsoftraster0.1 (= $version)" || fail "libsoftraster-dev Depends: $(field "$dev" Depends)"
 # What each holds.
@@ -35,6 +42,7 @@ holds "$bin" ./usr/share/thumbnailers/softraster.thumbnailer
 holds "$bin" ./usr/share/mime/packages/softraster-models.xml
 holds "$lib" ./usr/lib/x86_64-linux-gnu/libsoftraster.so.$version
 holds "$oiio" ./usr/lib/x86_64-linux-gnu/softraster/libsoftraster_oiio.so
+holds "$video" ./usr/lib/x86_64-linux-gnu/softraster/libsoftraster_video.so
 holds "$dev" ./usr/include/softraster/context.h
 holds "$dev" ./usr/lib/x86_64-linux-gnu/cmake/softraster/softrasterConfig.cmake
 holds "$dev" ./usr/lib/x86_64-linux-gnu/pkgconfig/softraster.pc

@@ -3,6 +3,8 @@
 //   .mp4   H.264 (libx264 through FFmpeg's libavcodec and libavformat; MPEG-4 part 2 where
 //          that encoder is missing), 4:2:0, BT.601 limited range
 //   .webm  VP9 (libvpx through FFmpeg), or VP8 where VP9 is missing
+//          (FFmpeg in a module of the library's, opened with the first video: a missing
+//          module is an InputError naming it)
 //   .gif   giflib; each frame's 256-color palette and dithering from libimagequant; loops
 //   NAME%04d.png (any printf number, any picture extension image_write.h knows): one
 //          picture per frame, numbered from 0
