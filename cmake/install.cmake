@@ -4,6 +4,7 @@
 #   lib/<arch>/libsoftraster.so.0.1               the library (and the .so link, for -dev)
 #   lib/<arch>/softraster/libsoftraster_oiio.so   the OpenImageIO module it opens on demand
 #   lib/<arch>/softraster/libsoftraster_video.so  the FFmpeg module, likewise (src/io/modules.h)
+#   lib/<arch>/softraster/libsoftraster_window.so the program's SDL2 window, likewise
 #   include/softraster/                          the public headers
 #   lib/<arch>/cmake/softraster/                 softrasterConfig.cmake: softraster::softraster
 #   lib/<arch>/pkgconfig/softraster.pc           pkg-config --cflags --libs softraster
@@ -13,6 +14,7 @@
 include(CMakePackageConfigHelpers)
 
 install(TARGETS softraster RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT bin)
+install(TARGETS softraster_window LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/softraster COMPONENT bin)
 install(TARGETS softraster_shared EXPORT softrasterTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT lib NAMELINK_COMPONENT dev
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -1,7 +1,8 @@
 # The Debian packages (`cpack -G DEB`, run by scripts/package.sh), split as Debian splits a
 # library and its program:
 #   softraster              the program (its library linked in: faster frames, see
-#                           CMakeLists.txt), man pages, bash completion and the thumbnailer
+#                           CMakeLists.txt), its window module (SDL2, for `view`), man
+#                           pages, bash completion and the thumbnailer
 #   libsoftraster0.1        the shared library
 #   libsoftraster0.1-oiio   its OpenImageIO module, for SGI, DDS, TIFF, WebP, HDR and EXR
 #                           textures: recommended, not required, because OpenImageIO brings

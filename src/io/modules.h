@@ -4,6 +4,7 @@
 // "Start-up and model files"):
 //   libsoftraster_oiio.so    OpenImageIO's pictures (oiio_module.h)
 //   libsoftraster_video.so   FFmpeg's videos (video_module.h)
+//   libsoftraster_window.so  the program's window, through SDL2 (platform/window_module.h)
 #pragma once
 
 namespace softraster {

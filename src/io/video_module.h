@@ -1,7 +1,8 @@
 // The video encoder lives in a module of its own (libsoftraster_video.so, modules.h), opened
 // the first time a video is written: Debian's FFmpeg brings about 130 shared libraries (its
-// codecs, GnuTLS, X11...), whose loading took 30 ms of every start of the program, for every
-// command, including the many that write no video.
+// codecs, GnuTLS, X11...), whose loading took 32 ms of every start of the program
+// (docs/performance.md "Start-up and model files"), for every command, including the many
+// that write no video.
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -1,131 +1,38 @@
 #include "platform/window.h"
 
-#include <algorithm>
-#include <cstdio>
-#include <cstdlib>
-
-#include <SDL.h>
-#include <SDL_ttf.h>
-#include <X11/Xlib.h>
-
+#include "io/modules.h"
+#include "platform/window_module.h"
 #include "softraster/error.h"
 
 namespace softraster::platform {
 
-namespace {
-constexpr int kStatusHeight = 22;
-
-// Xlib's default answer to a protocol error is to end the program (exit code 1). SDL sends
-// events to other windows (the root, a selection's requester) that may be gone by then: under
-// Xvfb a window quit with 'q' sometimes ended with "BadWindow ... X_SendEvent" this way. Such
-// an error does not concern the pictures: say it, and go on. (Set before SDL starts, so
-// that SDL's own safety net passes errors on to this one.)
-int report_x_error(Display* display, XErrorEvent* e) {
-    char text[256] = "";
-    XGetErrorText(display, e->error_code, text, sizeof text);
-    std::fprintf(stderr, "softraster view: X error ignored: %s (request %d)\n", text, int(e->request_code));
-    return 0;
-}
-const char* const kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // Debian's fonts-dejavu-core
-}  // namespace
-
+// The module's functions, found the first time a window opens (window_module.h).
 struct Window::Impl {
-    SDL_Window* window = nullptr;
-    TTF_Font* font = nullptr;
-    bool dragging[4] = {false, false, false, false};
+    const SoftrasterWindowApi& api;
+    SoftrasterWindow* window;
 };
 
-Window::Window(const std::string& title, int width, int height) : impl_(std::make_unique<Impl>()) {
-    // Without X11 or Wayland (an SSH session, a server) SDL would try the console's own
-    // devices; say so instead, unless SDL_VIDEODRIVER asks for one.
-    const bool display = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY") || std::getenv("SDL_VIDEODRIVER");
-    // The pictures are finished pixels, copied straight into the window's own surface, with
-    // no OpenGL (which would start a GL driver and its threads beside ours).
-    SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
-    XSetErrorHandler(report_x_error);
-    if (!display || SDL_Init(SDL_INIT_VIDEO) != 0)
-        throw InputError(std::string("no display to open a window on (") + (display ? SDL_GetError() : "DISPLAY is not set") +
-                         "): try 'softraster view --terminal' or 'softraster animate'");
-    impl_->window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height + kStatusHeight,
-                                     SDL_WINDOW_RESIZABLE);
-    if (!impl_->window) throw InputError(std::string("cannot open a window: ") + SDL_GetError());
-    if (TTF_Init() == 0) impl_->font = TTF_OpenFont(kFont, 13);
+Window::Window(const std::string& title, int width, int height) {
+    static const auto api = reinterpret_cast<SoftrasterWindowApiFn>(module_entry(SOFTRASTER_WINDOW_MODULE, SOFTRASTER_WINDOW_API));
+    if (!api)
+        throw InputError("a window needs softraster's window module (" SOFTRASTER_WINDOW_MODULE
+                         "), which was not found; set SOFTRASTER_MODULE_DIR to its folder, or try 'softraster view --terminal'");
+    char error[512] = "";
+    SoftrasterWindow* window = api()->open(title.c_str(), width, height, error, sizeof error);
+    if (!window) throw InputError(error);
+    impl_ = std::make_unique<Impl>(Impl{*api(), window});
 }
 
-Window::~Window() {
-    if (impl_->font) TTF_CloseFont(impl_->font);
-    TTF_Quit();
-    if (impl_->window) SDL_DestroyWindow(impl_->window);
-    SDL_Quit();
-}
+Window::~Window() { impl_->api.close(impl_->window); }
 
 void Window::present(const Image& frame, const std::string& status, const std::string& error) {
-    Impl& w = *impl_;
-    SDL_Surface* surface = SDL_GetWindowSurface(w.window);  // (a new one after a resize)
-    if (!surface) return;
-    const SDL_Rect picture{0, 0, surface->w, std::max(1, surface->h - kStatusHeight)};
-    const SDL_Rect bar{0, picture.h, surface->w, surface->h - picture.h};
-    SDL_FillRect(surface, &bar, SDL_MapRGB(surface->format, 24, 24, 28));
-    if (frame.width == picture.w && frame.height == picture.h && !SDL_MUSTLOCK(surface)) {
-        // One pass from our RGBA bytes to the window's pixel format (the usual case).
-        SDL_ConvertPixels(frame.width, frame.height, SDL_PIXELFORMAT_RGBA32, frame.pixels.data(), frame.width * 4,
-                          surface->format->format, surface->pixels, surface->pitch);
-    } else if (SDL_Surface* in = SDL_CreateRGBSurfaceWithFormatFrom(const_cast<Rgba8*>(frame.pixels.data()), frame.width, frame.height,
-                                                                     32, frame.width * 4, SDL_PIXELFORMAT_RGBA32)) {
-        SDL_Rect to = picture;  // the window was resized and this frame is of the old size: scaled
-        SDL_BlitScaled(in, nullptr, surface, &to);
-        SDL_FreeSurface(in);
-    }
-    const std::string& line = error.empty() ? status : error;
-    if (w.font && !line.empty()) {
-        const SDL_Color color = error.empty() ? SDL_Color{230, 230, 230, 255} : SDL_Color{255, 90, 80, 255};
-        if (SDL_Surface* text = TTF_RenderUTF8_Blended(w.font, line.c_str(), color)) {
-            SDL_Rect at{6, bar.y + (kStatusHeight - text->h) / 2, text->w, text->h};
-            SDL_BlitSurface(text, nullptr, surface, &at);
-            SDL_FreeSurface(text);
-        }
-    }
-    SDL_UpdateWindowSurface(w.window);
+    impl_->api.present(impl_->window, reinterpret_cast<const uint8_t*>(frame.pixels.data()), frame.width, frame.height, status.c_str(), error.c_str());
 }
 
 std::vector<InputEvent> Window::events(int wait_ms) {
-    std::vector<InputEvent> out;
-    SDL_Event e;
-    bool have = (wait_ms > 0 ? SDL_WaitEventTimeout(&e, wait_ms) : SDL_PollEvent(&e)) != 0;
-    while (have) {
-        switch (e.type) {
-            case SDL_QUIT: out.push_back({InputEvent::Kind::Quit}); break;
-            case SDL_KEYDOWN: {
-                const SDL_Keycode k = e.key.keysym.sym;
-                int key = 0;
-                if ((k >= 'a' && k <= 'z') || (k >= '0' && k <= '9') || k == ' ') key = int(k);
-                else if (k == SDLK_LEFT) key = kKeyLeft;
-                else if (k == SDLK_RIGHT) key = kKeyRight;
-                else if (k == SDLK_UP) key = kKeyUp;
-                else if (k == SDLK_DOWN) key = kKeyDown;
-                else if (k == SDLK_ESCAPE) key = kKeyEscape;
-                else if (k == SDLK_F12) key = kKeyF12;
-                if (key) out.push_back({InputEvent::Kind::Key, key});
-                break;
-            }
-            case SDL_MOUSEBUTTONDOWN:
-            case SDL_MOUSEBUTTONUP:
-                if (e.button.button < 4) impl_->dragging[e.button.button] = e.type == SDL_MOUSEBUTTONDOWN;
-                break;
-            case SDL_MOUSEMOTION:
-                for (int b = 1; b < 4; ++b)
-                    if (impl_->dragging[b]) out.push_back({InputEvent::Kind::Drag, 0, b, float(e.motion.xrel), float(e.motion.yrel)});
-                break;
-            case SDL_MOUSEWHEEL: out.push_back({InputEvent::Kind::Wheel, 0, 0, 0.0f, float(e.wheel.y)}); break;
-            case SDL_WINDOWEVENT:
-                if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED)
-                    out.push_back({InputEvent::Kind::Resize, 0, 0, 0, 0, e.window.data1, std::max(1, e.window.data2 - kStatusHeight)});
-                break;
-            default: break;
-        }
-        have = SDL_PollEvent(&e) != 0;
-    }
-    return out;
+    InputEvent got[64];
+    const int n = impl_->api.events(impl_->window, wait_ms, got, 64);
+    return {got, got + n};
 }
 
 }  // namespace softraster::platform

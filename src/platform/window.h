@@ -1,7 +1,7 @@
 // The platform layer of `softraster view`: a window that shows finished pictures and reports
-// the user's input, through SDL2 (the pixels are only presented here; the pictures, and
-// the double buffering of the viewer, are softraster's own: src/cli/view_command.cpp). The
-// status line is set in DejaVu Sans through SDL2_ttf.
+// the user's input, through SDL2 in a module opened with the first window (window_module.h;
+// the pixels are only presented there; the pictures, and the double buffering of the viewer,
+// are softraster's own: src/cli/view_command.cpp).
 #pragma once
 #include <memory>
 #include <string>
@@ -23,7 +23,8 @@ inline constexpr int kKeyLeft = 1000, kKeyRight = 1001, kKeyUp = 1002, kKeyDown 
 class Window {
 public:
     // Opens a resizable window whose drawing area is width x height, with room below it for
-    // the status line. Throws InputError when there is no display to open it on.
+    // the status line. Throws InputError when there is no display to open it on, or no
+    // window module.
     Window(const std::string& title, int width, int height);
     ~Window();
     Window(const Window&) = delete;

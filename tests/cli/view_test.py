@@ -6,8 +6,8 @@ byte-identical to `render` of the same view: two presses of the right arrow turn
 by 30 degrees (render --turntable 24 --time 2), `s` switches pbr to lambert. The window
 survives a broken scene file (the last good scene stays, and the mended file is drawn with
 the view kept) and a resize. What the window shows, read back from the X server with xwd,
-is that frame pixel for pixel above a status line of light text. Without a display: one
-line, exit 2. (One window for all of
+is that frame pixel for pixel above a status line of light text. Without a display, or
+without the window module: one line, exit 2. (One window for all of
 it: a second window in the same virtual display sometimes went unfound under load.)"""
 import json, re, os, shutil, struct, subprocess, sys, time
 
@@ -38,6 +38,15 @@ env = {k: v for k, v in os.environ.items() if k not in ('DISPLAY', 'WAYLAND_DISP
 r = subprocess.run([exe, 'view', os.path.join(HERE, '..', 'scenes', 'models', 'normal_mapped.gltf')], capture_output=True, text=True,
                    timeout=60, env=env)
 check('no display: exit 2, one line', r.returncode == 2 and 'animate' in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr)
+# The program alone, without its window module (src/io/modules.h): one line that names the
+# module and how to point at it, exit 2.
+alone = os.path.join(work, 'alone')
+os.makedirs(alone)
+shutil.copy2(exe, alone)
+r = subprocess.run([os.path.join(alone, os.path.basename(exe)), 'view', os.path.join(HERE, '..', 'scenes', 'models', 'normal_mapped.gltf')],
+                   capture_output=True, text=True, timeout=60, env={k: v for k, v in env.items() if k not in ('SOFTRASTER_MODULE_DIR', 'LD_LIBRARY_PATH')})
+check('no window module: exit 2, one line', r.returncode == 2 and 'libsoftraster_window.so' in r.stderr and 'SOFTRASTER_MODULE_DIR' in r.stderr
+      and len(r.stderr.strip().splitlines()) == 1, r.stderr)
 
 # A virtual display: Xvfb picks a free number and writes it to the pipe (nothing if it could
 # not start: then again).

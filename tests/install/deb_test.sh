@@ -35,6 +35,7 @@ field "$dev" Depends | grep -q "libsoftraster0.1 (= $version)" || fail "libsoftr
 # What each holds.
 holds() { local files; files=$(dpkg-deb -c "$1" | awk '{print $6}'); grep -qx "$2" <<<"$files" || fail "$(basename "$1") lacks $2"; }
 holds "$bin" ./usr/bin/softraster
+holds "$bin" ./usr/lib/x86_64-linux-gnu/softraster/libsoftraster_window.so
 holds "$bin" ./usr/share/man/man1/softraster.1.gz
 holds "$bin" ./usr/share/man/man1/softraster-thumbnail.1.gz
 holds "$bin" ./usr/share/bash-completion/completions/softraster
