@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the packages of scripts/package.sh on a clean Debian 12 (a minimal debootstrap
 # chroot, nothing else installed) and checks what a user gets: the program, its man page,
-# bash completion, pkg-config, find_package(softraster) and the thumbnailer. Needs root and
+# bash completion, pkg-config, find_package(softraster), the thumbnailer and a video (the
+# FFmpeg module, recommended, which apt installs with the program). Needs root and
 # Debian's archive; takes a few minutes (it downloads a base system and the dependencies).
 #   scripts/package.sh && sudo scripts/check-clean-install.sh [dist] [chroot folder]
 set -euo pipefail
@@ -35,6 +36,8 @@ chroot "$root" /usr/bin/env -i PATH=/usr/bin softraster thumbnail --size 256 /tm
 cp "$root/tmp/Wuson.ply" "$root/tmp/wuson.stl"
 chroot "$root" /usr/bin/env -i PATH=/usr/bin softraster thumbnail --size 256 /tmp/wuson.stl /tmp/wuson.png
 ls -l "$root/tmp/box.png" "$root/tmp/wuson.png"
+in_root softraster animate /tmp/BoxTextured.glb --size 64 --fps 5 --duration 0.4 -o /tmp/box.mp4
+ls -l "$root/tmp/box.mp4"
 in_root pkg-config --cflags --libs softraster
 echo "find_package(softraster) and pkg-config builds of examples/triangle.cpp"
 in_root cmake -S /tmp -B /tmp/build -DCMAKE_BUILD_TYPE=Release >/dev/null

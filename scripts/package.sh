@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Builds softraster's Debian packages into dist/: softraster (the program), libsoftraster0.1
-# (the library) and libsoftraster-dev (headers, CMake and pkg-config files).
+# Builds softraster's Debian packages into dist/ (cmake/package.cmake): softraster (the
+# program), libsoftraster0.1 (the library), its modules libsoftraster0.1-oiio and
+# libsoftraster0.1-video, libsoftraster-dev (headers, CMake and pkg-config files) and, where
+# pybind11 is installed, python3-softraster.
 #   scripts/package.sh && sudo apt install ./dist/*.deb
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -6,15 +6,32 @@
 #include <vector>
 
 #include <dlfcn.h>
+#include <sys/auxv.h>
 
 namespace softraster {
+namespace {
+
+// The running program's file: /proc/self/exe, or where no /proc is mounted (a chroot, a
+// minimal container) the name it was started by (AT_EXECFN, which a search of PATH makes a
+// full path), with its symbolic links resolved as /proc/self/exe's are. Empty if neither.
+std::filesystem::path program_file() {
+    std::error_code ec;
+    std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) return exe;
+    const auto* name = reinterpret_cast<const char*>(getauxval(AT_EXECFN));
+    if (!name) return {};
+    exe = std::filesystem::weakly_canonical(std::filesystem::absolute(name, ec), ec);
+    return ec ? std::filesystem::path() : exe;
+}
+
+}  // namespace
 
 void* module_entry(const char* file, const char* symbol) {
     std::vector<std::string> dirs;
     if (const char* env = std::getenv("SOFTRASTER_MODULE_DIR")) dirs.emplace_back(env);
     std::error_code ec;
-    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
+    const std::filesystem::path exe = program_file();
+    if (!exe.empty()) {
         dirs.push_back(exe.parent_path().string());
         dirs.push_back((exe.parent_path() / SOFTRASTER_MODULE_DIR_FROM_PROGRAM).lexically_normal().string());  // (installed)
     }

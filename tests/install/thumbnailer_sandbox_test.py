@@ -2,7 +2,9 @@
 """thumbnailer_sandbox_test.py BUILD CORPUS WORKDIR: the installed thumbnailer run as GNOME
 runs it, in bubblewrap: only /usr, read-only; no network, no $HOME, no display; the input
 file alone under /tmp. It must draw glTF, GLB, OBJ, STL, PLY and FBX files there, and a
-file whose sidecars (.mtl, .bin, textures) are out of reach untextured where it can.
+file whose sidecars (.mtl, .bin, textures) are out of reach untextured where it can. In the
+same sandbox without /proc (a chroot or a minimal container has none), the installed program
+finds its modules where they are installed: it writes a video through the FFmpeg module.
 
 "Installed": `cmake --install` into a staging folder, laid over the system's /usr by an
 overlay mount in a mount namespace of the test's own (unshare -m: the machine's /usr is
@@ -34,14 +36,14 @@ def drawn(path, size):
     return (w, h, ch) == (size, size, 4) and pixels[3::4].count(255) > size * size // 20
 
 
-def sandbox(tmp, model, inside_in):
+def sandbox(tmp, model, inside_in, proc=True):
     """gnome-desktop's thumbnail script's bubblewrap arguments (less its seccomp filter), run
-    where /usr has the staged installation laid over it."""
+    where /usr has the staged installation laid over it (proc: with /proc mounted)."""
     overlay = 'mount -t overlay overlay -o lowerdir=%s:/usr /usr && exec "$@"' % shlex.quote(os.path.join(stage, 'usr'))
     return ['unshare', '-m', 'sh', '-c', overlay, 'sh',
             'bwrap', '--ro-bind', '/usr', '/usr', '--ro-bind', '/etc/ld.so.cache', '/etc/ld.so.cache',
             '--symlink', 'usr/lib', '/lib', '--symlink', 'usr/lib64', '/lib64', '--symlink', 'usr/bin', '/bin',
-            '--symlink', 'usr/sbin', '/sbin', '--proc', '/proc', '--dev', '/dev', '--chdir', '/',
+            '--symlink', 'usr/sbin', '/sbin'] + (['--proc', '/proc'] if proc else []) + ['--dev', '/dev', '--chdir', '/',
             '--clearenv', '--setenv', 'PATH', '/usr/bin', '--setenv', 'GIO_USE_VFS', 'local',
             '--unshare-all', '--die-with-parent', '--bind', tmp, '/tmp', '--ro-bind', model, inside_in]
 
@@ -96,6 +98,16 @@ for model, ext in cases:
 r, out = thumbnail(box_gltf, '.gltf')
 if r.returncode != 2 or os.path.exists(out) or len(r.stderr.strip().splitlines()) != 1:
     failures.append('glTF without its .bin: want exit 2 and no picture, got %d %r' % (r.returncode, r.stderr))
+
+# No /proc: the program finds its FFmpeg module from the name it was started by.
+tmp = os.path.join(work, 'no-proc')
+os.makedirs(tmp)
+r = subprocess.run(sandbox(tmp, os.path.join(corpus, 'glTF2', 'BoxTextured-glTF-Binary', 'BoxTextured.glb'), '/tmp/in.glb', proc=False) +
+                   ['sh', '-c', 'test ! -e /proc/self/exe && exec softraster animate /tmp/in.glb --size 64 --fps 5 --duration 0.4 -o /tmp/box.mp4'],
+                   capture_output=True, text=True, timeout=120)
+video = os.path.join(tmp, 'box.mp4')
+if r.returncode != 0 or not os.path.exists(video) or os.path.getsize(video) == 0:
+    failures.append('a video without /proc: exit %d, %r' % (r.returncode, r.stderr.strip()))
 
 for f in failures:
     print('FAIL:', f)
