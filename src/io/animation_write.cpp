@@ -178,11 +178,8 @@ private:
 // module (video_module.h), opened with the first video
 
 const SoftrasterVideoApi& video_api(const std::filesystem::path& out) {
-    static const auto api = reinterpret_cast<SoftrasterVideoApiFn>(module_entry(SOFTRASTER_VIDEO_MODULE, SOFTRASTER_VIDEO_API));
-    if (!api)
-        throw InputError(out.string() + ": writing a video needs softraster's FFmpeg module (" SOFTRASTER_VIDEO_MODULE
-                                        "), which was not found; set SOFTRASTER_MODULE_DIR to its folder");
-    return *api();
+    return *reinterpret_cast<SoftrasterVideoApiFn>(
+        required_module_entry(SOFTRASTER_VIDEO_MODULE, SOFTRASTER_VIDEO_API, out.string() + ": writing a video needs softraster's FFmpeg module"))();
 }
 
 class VideoWriter final : public AnimationWriter {

@@ -134,11 +134,8 @@ constexpr int kMaxSide = 65536;
 
 // The OpenImageIO module's decode function, opened on first use (oiio_module.h, modules.h).
 SoftrasterDecodeFn oiio_decoder(const std::string& name) {
-    static const auto decode = reinterpret_cast<SoftrasterDecodeFn>(module_entry(SOFTRASTER_OIIO_MODULE, SOFTRASTER_OIIO_DECODE));
-    if (!decode)
-        throw InputError(name + ": this picture format needs softraster's OpenImageIO module (" SOFTRASTER_OIIO_MODULE
-                                "), which was not found; set SOFTRASTER_MODULE_DIR to its folder");
-    return decode;
+    return reinterpret_cast<SoftrasterDecodeFn>(
+        required_module_entry(SOFTRASTER_OIIO_MODULE, SOFTRASTER_OIIO_DECODE, name + ": this picture format needs softraster's OpenImageIO module"));
 }
 
 Image decode_with_oiio(std::string_view bytes, const std::filesystem::path* file, const std::string& name, const std::string& ext) {

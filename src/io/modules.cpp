@@ -1,7 +1,11 @@
 #include "io/modules.h"
 
+#include "softraster/error.h"
+
 #include <cstdlib>
 #include <filesystem>
+#include <map>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -24,9 +28,8 @@ std::filesystem::path program_file() {
     return ec ? std::filesystem::path() : exe;
 }
 
-}  // namespace
-
-void* module_entry(const char* file, const char* symbol) {
+// The search itself (module_entry).
+void* find_module_entry(const char* file, const char* symbol) {
     std::vector<std::string> dirs;
     if (const char* env = std::getenv("SOFTRASTER_MODULE_DIR")) dirs.emplace_back(env);
     std::error_code ec;
@@ -48,6 +51,22 @@ void* module_entry(const char* file, const char* symbol) {
             if (void* entry = dlsym(module, symbol)) return entry;
     }
     return nullptr;
+}
+
+}  // namespace
+
+void* module_entry(const char* file, const char* symbol) {
+    static std::mutex mutex;
+    static std::map<std::pair<std::string, std::string>, void*> found;
+    const std::lock_guard lock(mutex);
+    const auto [at, first] = found.try_emplace({file, symbol}, nullptr);
+    if (first) at->second = find_module_entry(file, symbol);
+    return at->second;
+}
+
+void* required_module_entry(const char* file, const char* symbol, const std::string& need, const char* hint) {
+    if (void* entry = module_entry(file, symbol)) return entry;
+    throw InputError(need + " (" + file + "), which was not found; set SOFTRASTER_MODULE_DIR to its folder" + hint);
 }
 
 }  // namespace softraster

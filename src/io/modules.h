@@ -6,6 +6,7 @@
 //   libsoftraster_video.so   FFmpeg's videos (video_module.h)
 //   libsoftraster_window.so  the program's window, through SDL2 (platform/window_module.h)
 #pragma once
+#include <string>
 
 namespace softraster {
 
@@ -13,7 +14,12 @@ namespace softraster {
 // module of that name with that symbol is found. Looked for in $SOFTRASTER_MODULE_DIR,
 // beside the program and where it is installed relative to the program, beside the shared
 // library and in its softraster/ folder (where `cmake --install` and the packages put it,
-// wherever the prefix is), then on the system's library path. Opened once, never closed.
+// wherever the prefix is), then on the system's library path. Looked for once (found or
+// not), opened once, never closed.
 void* module_entry(const char* file, const char* symbol);
+
+// The same, or where there is none an InputError: `need` (what needs which module), then
+// the module's file and how to point at it, then `hint`.
+void* required_module_entry(const char* file, const char* symbol, const std::string& need, const char* hint = "");
 
 }  // namespace softraster

@@ -13,14 +13,12 @@ struct Window::Impl {
 };
 
 Window::Window(const std::string& title, int width, int height) {
-    static const auto api = reinterpret_cast<SoftrasterWindowApiFn>(module_entry(SOFTRASTER_WINDOW_MODULE, SOFTRASTER_WINDOW_API));
-    if (!api)
-        throw InputError("a window needs softraster's window module (" SOFTRASTER_WINDOW_MODULE
-                         "), which was not found; set SOFTRASTER_MODULE_DIR to its folder, or try 'softraster view --terminal'");
+    const SoftrasterWindowApi& api = *reinterpret_cast<SoftrasterWindowApiFn>(required_module_entry(
+        SOFTRASTER_WINDOW_MODULE, SOFTRASTER_WINDOW_API, "a window needs softraster's window module", ", or try 'softraster view --terminal'"))();
     char error[512] = "";
-    SoftrasterWindow* window = api()->open(title.c_str(), width, height, error, sizeof error);
+    SoftrasterWindow* window = api.open(title.c_str(), width, height, error, sizeof error);
     if (!window) throw InputError(error);
-    impl_ = std::make_unique<Impl>(Impl{*api(), window});
+    impl_ = std::make_unique<Impl>(Impl{api, window});
 }
 
 Window::~Window() { impl_->api.close(impl_->window); }
