@@ -20,6 +20,7 @@ Tables make_tables() {
     for (int k = 0; k < 256; ++k) {
         t.decode[size_t(k)] = float(decode_exact(k / 255.0));
         t.decode_fixed[size_t(k)] = uint16_t(std::lround(65280.0 * decode_exact(k / 255.0)));
+        t.code_of_fixed[t.decode_fixed[size_t(k)]] = uint8_t(k);
     }
     t.threshold[0] = -std::numeric_limits<float>::infinity();
     t.threshold[256] = std::numeric_limits<float>::infinity();

@@ -32,6 +32,9 @@ struct Tables {
     // decode(k / 255) on the texture filter's fixed-point scale (texture.h "Precision"):
     // round(65280 decode(k / 255)), 0 to 65280.
     std::array<uint16_t, 256> decode_fixed;
+    // Its inverse: [decode_fixed[k]] = k, the other entries 0 (the values differ: a unit test
+    // checks). An sRGB texture keeps only its decoded texels, and finds its stored bytes here.
+    std::array<uint8_t, 65281> code_of_fixed;
     std::array<float, 257> threshold;  // [k]: the least float >= t_k; [0] = -inf, [256] = +inf
     // The encode's one lookup, for each of 13 x 128 intervals of [2^-13, 1): float bit
     // patterns >> 16 (exponent and 7 bits of mantissa) from that of 2^-13. No interval holds

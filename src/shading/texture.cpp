@@ -106,36 +106,41 @@ Texture::Texture(const Image& image, ColorSpace color) : srgb_(color == ColorSpa
         tables_.log2_tiles_x[k] = int(std::bit_width(unsigned(l.tiles_x))) - 1;
     }
     pot_ = std::has_single_bit(unsigned(image.width)) && std::has_single_bit(unsigned(image.height));
-    storage_.assign(size_t(offset) + 15 + 7, 0u);  // (15: the alignment below; 7: the footprint loads' reach, texture_lanes.h)
-    aligned_ = (64 - reinterpret_cast<uintptr_t>(storage_.data()) % 64) % 64 / sizeof(uint32_t);
-    uint32_t* out = storage_.data() + aligned_;
+    // One copy of the texels: a linear texture's bytes, or an sRGB texture's decoded onto the
+    // fixed-point scale (fixed_texels). (The slack: the alignment below, and for a linear
+    // texture 7 texels for the footprint loads' reach, texture_lanes.h.)
+    uint32_t* out = nullptr;
+    uint64_t* fixed = nullptr;
+    if (srgb_) {
+        fixed_storage_.assign(size_t(offset) + 7, 0u);
+        fixed_aligned_ = (64 - reinterpret_cast<uintptr_t>(fixed_storage_.data()) % 64) % 64 / sizeof(uint64_t);
+        fixed = fixed_storage_.data() + fixed_aligned_;
+    } else {
+        storage_.assign(size_t(offset) + 15 + 7, 0u);
+        aligned_ = (64 - reinterpret_cast<uintptr_t>(storage_.data()) % 64) % 64 / sizeof(uint32_t);
+        out = storage_.data() + aligned_;
+    }
+    const std::array<uint16_t, 256>& decode = srgb::tables().decode_fixed;
     // Tile by tile, apron and padding included: place (x, y) of tile (tx, ty) holds texel
     // (4 tx + x, 4 ty + y), wrapped as repeat wraps.
     for (size_t k = 0; k < levels_.size(); ++k) {
         const Level& l = levels_[k];
         const int tiles_y = (l.height + 3) / 4;
-        uint32_t* tile = out + l.offset;
+        size_t at = size_t(l.offset);
         for (int ty = 0; ty < tiles_y; ++ty)
-            for (int tx = 0; tx < l.tiles_x; ++tx, tile += kTileTexels)
+            for (int tx = 0; tx < l.tiles_x; ++tx)
                 for (int y = 0; y < kTileSide; ++y)
-                    for (int x = 0; x < kTileSide; ++x) {
+                    for (int x = 0; x < kTileSide; ++x, ++at) {
                         int i = 4 * tx + x, j = 4 * ty + y;  // (a division only past the edge)
                         if (i >= l.width) i %= l.width;
                         if (j >= l.height) j %= l.height;
                         const Rgba8 t = rows[k][size_t(j) * size_t(l.width) + size_t(i)];
-                        tile[y * kTileSide + x] = uint32_t(t.r) | uint32_t(t.g) << 8 | uint32_t(t.b) << 16 | uint32_t(t.a) << 24;
+                        if (fixed)
+                            fixed[at] = uint64_t(decode[t.r]) | uint64_t(decode[t.g]) << 16 | uint64_t(decode[t.b]) << 32 |
+                                        uint64_t(t.a) << 56;  // (alpha: 256 a)
+                        else
+                            out[at] = uint32_t(t.r) | uint32_t(t.g) << 8 | uint32_t(t.b) << 16 | uint32_t(t.a) << 24;
                     }
-    }
-    if (srgb_) {  // the same places, decoded onto the fixed-point scale (fixed_texels)
-        fixed_storage_.assign(size_t(offset) + 7, 0u);
-        fixed_aligned_ = (64 - reinterpret_cast<uintptr_t>(fixed_storage_.data()) % 64) % 64 / sizeof(uint64_t);
-        const std::array<uint16_t, 256>& decode = srgb::tables().decode_fixed;
-        uint64_t* fixed = fixed_storage_.data() + fixed_aligned_;
-        for (size_t k = 0; k < size_t(offset); ++k) {
-            const uint32_t t = out[k];
-            fixed[k] = uint64_t(decode[t & 255u]) | uint64_t(decode[(t >> 8) & 255u]) << 16 | uint64_t(decode[(t >> 16) & 255u]) << 32 |
-                       uint64_t(t >> 24) << 56;  // (alpha: 256 a)
-        }
     }
 }
 

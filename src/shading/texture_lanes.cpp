@@ -85,7 +85,13 @@ void Texture::sample_lanes(const f8& u, const f8& v, const std::array<f8, 4>& d,
         auto footprint = [&](const LaneLevels& l, const i8& i0, const i8& j0, i8 (&texel)[4], i8 (&border)[4]) {
             i8 index[4];
             footprint_indices(l, i0, j0, index, border);
-            for (int t = 0; t < 4; ++t) gather<Wide>(texels, index[t], texel[t]);
+            for (int t = 0; t < 4; ++t) {
+                if constexpr (Srgb) {  // (the float filter: a border color with an sRGB texture, which keeps no bytes)
+                    for (int k = 0; k < simd::kLanes; ++k) texel[t][k] = int32_t(stored_bits(uint32_t(index[t][k])));
+                } else {
+                    gather<Wide>(texels, index[t], texel[t]);
+                }
+            }
         };
         // Repeat and clamp read the footprint from the tile's apron (texture.h): its lower-left
         // texel wrapped, the others at offsets 1, 5 and 6. Clamp at an edge, where both texels

@@ -34,6 +34,18 @@ TEST(Srgb, EncodingADecodedByteGivesItBack) {
     for (int k = 0; k < 256; ++k) EXPECT_EQ(int(srgb::encode(srgb::decode(uint8_t(k)))), k) << k;
 }
 
+// The texture filter's fixed-point decode (texture.h "Precision") has a value per byte, all
+// different, so its inverse (how an sRGB texture, which keeps only its decoded texels, finds
+// its stored bytes) gives every byte back.
+TEST(Srgb, EveryFixedPointDecodeLeadsBackToItsByte) {
+    const srgb::Tables& t = srgb::tables();
+    for (int k = 0; k < 256; ++k) {
+        EXPECT_EQ(t.decode_fixed[size_t(k)], uint16_t(std::lround(65280.0 * decode_ref(k / 255.0)))) << k;
+        if (k > 0) EXPECT_LT(t.decode_fixed[size_t(k - 1)], t.decode_fixed[size_t(k)]) << k;
+        EXPECT_EQ(int(t.code_of_fixed[t.decode_fixed[size_t(k)]]), k) << k;
+    }
+}
+
 // Around each threshold (where the rounding changes) and at random: the formula's rounding.
 // (Away from a threshold by more than the double formula's error, the two must agree.)
 TEST(Srgb, EncodesFloatsAsTheRoundedFormula) {

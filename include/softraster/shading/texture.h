@@ -114,13 +114,13 @@ public:
     // Texel (i, j) of a level, j counted from the bottom row, as floats in [0, 1].
     // (Decoded, for an sRGB texture.)
     glm::vec4 texel(int level, int i, int j) const {
-        const uint32_t t = texels()[texel_index(levels_[size_t(level)], i, j)];
+        const uint32_t t = stored_bits(texel_index(levels_[size_t(level)], i, j));
         if (srgb_) return {srgb::decode(uint8_t(t)), srgb::decode(uint8_t(t >> 8)), srgb::decode(uint8_t(t >> 16)), float(t >> 24) * (1.0f / 255.0f)};
         return glm::vec4(float(t & 255u), float((t >> 8) & 255u), float((t >> 16) & 255u), float(t >> 24)) * (1.0f / 255.0f);
     }
     // The stored bytes of a texel (encoded, for an sRGB texture).
     Rgba8 stored(int level, int i, int j) const {
-        const uint32_t t = texels()[texel_index(levels_[size_t(level)], i, j)];
+        const uint32_t t = stored_bits(texel_index(levels_[size_t(level)], i, j));
         return {uint8_t(t), uint8_t(t >> 8), uint8_t(t >> 16), uint8_t(t >> 24)};
     }
     glm::vec4 texel(int i, int j) const { return texel(0, i, j); }
@@ -170,13 +170,23 @@ private:
     static size_t texel_index(const Level& l, int i, int j) {
         return size_t(l.offset) + size_t((j >> 2) * l.tiles_x + (i >> 2)) * kTileTexels + size_t((j & 3) * kTileSide + (i & 3));
     }
+    // A linear texture's texels, r in the low byte (null for an sRGB texture).
     const uint32_t* texels() const { return storage_.data() + aligned_; }
-    // An sRGB texture's texels decoded onto the fixed-point scale (above), r, g, b, a in the
-    // 16-bit quarters from the lowest, in the same places as texels(): the eight-lane filter
-    // reads them as a linear texture's bytes, with no table lookup per channel and texel.
+    // An sRGB texture's texels, and only those, decoded onto the fixed-point scale (above): r,
+    // g, b, a in the 16-bit quarters from the lowest, in the places texel_index gives. The
+    // filters read them as a linear texture's bytes, with no table lookup per channel and
+    // texel; the 8-bit copy they were made from is not kept (it would add half their size).
     const uint64_t* fixed_texels() const { return fixed_storage_.data() + fixed_aligned_; }
+    // Texel `at`'s stored bytes, r in the low byte, from whichever copy the texture keeps.
+    uint32_t stored_bits(size_t at) const {
+        if (!srgb_) return texels()[at];
+        const uint64_t t = fixed_texels()[at];
+        const std::array<uint8_t, 65281>& code = srgb::tables().code_of_fixed;
+        return uint32_t(code[t & 0xffffu]) | uint32_t(code[(t >> 16) & 0xffffu]) << 8 | uint32_t(code[(t >> 32) & 0xffffu]) << 16 |
+               uint32_t(t >> 56) << 24;  // (alpha: 256 a)
+    }
     std::vector<Level> levels_;
-    std::vector<uint32_t> storage_;  // RGBA8 texels, r in the low byte
+    std::vector<uint32_t> storage_;  // (linear textures only)
     size_t aligned_ = 0;              // index of the first texel: at a 64-byte boundary
     std::vector<uint64_t> fixed_storage_;  // (sRGB textures only)
     size_t fixed_aligned_ = 0;
