@@ -1,7 +1,8 @@
 // Textures and their sampling (docs/scene-format.md "Textures"): 8-bit texels, (0, 0) at the
 // bottom-left of the picture as displayed, texel centers at ((i + 0.5) / w, (j + 0.5) / h).
-// An sRGB texture (GL_SRGB8_ALPHA8) stores its r, g, b encoded; each texel is decoded
-// (srgb.h) before it is filtered, and its mipmaps are averaged in linear light.
+// An sRGB texture (GL_SRGB8_ALPHA8) has its r, g, b encoded; each texel is decoded (srgb.h)
+// before it is filtered (and kept decoded: fixed_texels), and its mipmaps are averaged in
+// linear light.
 //
 // A texture keeps its mipmap chain (level k is max(1, w >> k) by max(1, h >> k), each texel
 // the average of the 2x2 texels under it, as glGenerateMipmap makes them). A Sampler is
@@ -158,10 +159,11 @@ private:
     // Each level is stored in tiles of 4x4 texels, the tiles row by row, each with an apron:
     // a fifth column and a fifth row repeating the texels to the right and above (the next
     // tiles' first column and row, and past the level's last texel its first, as repeat
-    // wraps). A tile is 5x5 texels, rows bottom first, 100 bytes. Every bilinear footprint
-    // whose lower-left texel is in the tile is then inside it, at offsets 0, 1, 5 and 6: two
-    // 8-byte loads instead of four gathered texels (sample_lanes). A level's sides are padded
-    // to multiples of 4 (the padding holds the wrapped texels too). All levels share one array.
+    // wraps). A tile is 5x5 texels, rows bottom first, 100 bytes (200 decoded). Every
+    // bilinear footprint whose lower-left texel is in the tile is then inside it, at offsets
+    // 0, 1, 5 and 6: two 8-byte loads instead of four gathered texels (sample_lanes). A
+    // level's sides are padded to multiples of 4 (the padding holds the wrapped texels too).
+    // All levels share one array.
     struct Level {
         int width, height;
         int tiles_x;  // tiles per row
