@@ -30,8 +30,8 @@ if grep -rl --binary-files=text "$build" "$stage" >/dev/null; then fail "the bui
 # Neither the program nor the library loads OpenImageIO, FFmpeg or SDL2 when it starts (each
 # has its module, src/io/modules.h): together some 280 libraries, 37 ms of every start.
 for f in "$root/bin/softraster" "$libdir"/libsoftraster.so.*.*.*; do
-  needed=$(objdump -p "$f" | awk '/NEEDED/ {print $2}')
-  if grep -E -q '^lib(OpenImageIO|avcodec|avformat|avutil|swscale|SDL2|X11)' <<<"$needed"; then fail "${f#$stage} links $(grep -E '^lib(OpenImageIO|av|sw|SDL2|X11)' <<<"$needed" | tr '\n' ' ')"; fi
+  heavy=$(objdump -p "$f" | awk '/NEEDED/ {print $2}' | grep -E '^lib(OpenImageIO|avcodec|avformat|avutil|swscale|SDL2|X11)' || true)
+  [ -z "$heavy" ] || fail "${f#$stage} links $(tr '\n' ' ' <<<"$heavy")"
 done
 # The installed program writes a video through the module where it was installed.
 "$root/bin/softraster" animate "$src/tests/scenes/models/textured.glb" --size 32x32 --fps 5 --duration 0.4 -o "$work/spin.mp4" 2>"$work/animate.log" \
