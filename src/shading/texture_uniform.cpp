@@ -1,8 +1,14 @@
 // The common lookup of Texture::sample8 (texture_lanes.h).
 #include "texture_lanes.h"
+#include "texture_lanes512.h"
 
 namespace softraster::lanes {
 namespace {
+
+// The lookup's copies: the generic and AVX2 ones every phase has (simd::on_best_path), and
+// one for AVX-512 of its own (texture_lanes512.h), where its loads and 16-bit filter take
+// about half the instructions.
+enum class Path { Generic, Avx2, Avx512 };
 
 // ---- the common lookup
 //
@@ -114,6 +120,54 @@ inline i8 fixed_point(const f8& u, float side) {
     return simd::to_int(reduce8<Wide>(u, Wrap::Repeat) * (float(1 << Bits) * side));
 }
 
+// A corner of a group's footprints, as the lookup keeps it between its phases: a linear
+// texture's eight 8-bit texels, or an sRGB texture's eight decoded ones (Fixed8's two
+// registers; on the AVX-512 copy, one).
+template <Path P, bool Srgb>
+struct CornerOf {
+    using type = std::conditional_t<Srgb, Fixed8, i8>;
+};
+#if SOFTRASTER_HAS_AVX2_PATH
+template <>
+struct CornerOf<Path::Avx512, true> {
+    using type = __m512i;
+};
+#endif
+// A group's footprints at one level.
+template <Path P, bool Srgb>
+inline void load_corners(const PotLevels& t, const i8& index, typename CornerOf<P, Srgb>::type (&corner)[4]) {
+#if SOFTRASTER_HAS_AVX2_PATH
+    if constexpr (P == Path::Avx512) {
+        if constexpr (Srgb) avx512::load_footprints_fixed(t.fixed_texels, index, corner);
+        else avx512::load_footprints(t.texels, index, corner);
+    } else
+#endif
+    if constexpr (Srgb) load_footprints_fixed<P != Path::Generic>(t.fixed_texels, index, corner);
+    else load_footprints<P != Path::Generic>(t.texels, index, corner);
+}
+
+#if SOFTRASTER_HAS_AVX2_PATH
+// sample_uniform_fixed's last phase on the AVX-512 copy: each group's levels filtered, blended
+// and made floats, a register per group and level. (A function of its own with the copy's
+// instructions: the 512-bit values cross no call without them, which Clang refuses.)
+template <int G, int D, bool Srgb, int Bits>
+[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline void filter_avx512(const typename CornerOf<Path::Avx512, Srgb>::type (&texel)[G][2][4],
+                                                                         const LevelPoint (&p)[G][2], const i8 (&weight)[D], bool two,
+                                                                         std::array<f8, 4>* const (&rgba)[G]) {
+    __m512i w[D];
+    if (two)
+        for (int k = 0; k < D; ++k) w[k] = avx512::spread(weight[k]);
+    for (int g = 0; g < G; ++g) {
+        __m512i f[2];
+        for (int k = 0; k < (two ? 2 : 1); ++k) {
+            if constexpr (Srgb) f[k] = avx512::bilinear_fixed<Bits>(texel[g][k], p[g][k].fx, p[g][k].fy);
+            else f[k] = avx512::bilinear16(texel[g][k], p[g][k].fx, p[g][k].fy);
+        }
+        avx512::unit_of_fixed(two ? avx512::blend(f[0], f[1], w[g / (G / D)]) : f[0], *rgba[g]);
+    }
+}
+#endif
+
 // The fixed-point filter (sample_level_fixed), for G groups of eight lanes in D sets, each
 // set's groups with the same derivatives d[set]: one group, a row of quads' first and second
 // rows (Texture::sample_pair: one level of detail serves both), two such pairs side by side
@@ -125,23 +179,21 @@ inline i8 fixed_point(const f8& u, float side) {
 // level of detail, the level's numbers, the call itself) serve all G groups. Srgb: the
 // texels come already decoded onto the fixed-point scale (Texture::fixed_texels), eight
 // bytes each, from the same places.
-template <bool Wide, int G, int D, bool Srgb>
+template <Path P, int G, int D, bool Srgb>
 inline bool sample_uniform_fixed(const PotLevels& t, const f8* const (&u)[G], const f8* const (&v)[G], const f8* const (&d)[D], MipFilter mip,
                                  std::array<f8, 4>* const (&rgba)[G]) {
     static_assert(G % D == 0);
+    constexpr bool Wide = P != Path::Generic;
     using simd::to_int;
     constexpr int kBits = Texture::fraction_bits(Srgb);
     i8 fu[G], fv[G];
     for (int g = 0; g < G; ++g) fu[g] = fixed_point<Wide, kBits>(*u[g], t.w), fv[g] = fixed_point<Wide, kBits>(*v[g], t.h);
     LevelPoint p[G][2];  // [group][first or second level]
-    using Texels = std::conditional_t<Srgb, Fixed8, i8>;
+    using Texels = typename CornerOf<P, Srgb>::type;
     Texels texel[G][2][4];
     auto load = [&](int levels) {
         for (int g = 0; g < G; ++g)
-            for (int k = 0; k < levels; ++k) {
-                if constexpr (Srgb) load_footprints_fixed<Wide>(t.fixed_texels, p[g][k].index, texel[g][k]);
-                else load_footprints<Wide>(t.texels, p[g][k].index, texel[g][k]);
-            }
+            for (int k = 0; k < levels; ++k) load_corners<P, Srgb>(t, p[g][k].index, texel[g][k]);
     };
     LaneLod lod[D];
     bool two = false;  // a second level to blend in
@@ -175,21 +227,31 @@ inline bool sample_uniform_fixed(const PotLevels& t, const f8* const (&u)[G], co
         if (level[0] + (two ? 1 : 0) >= 16) return false;  // (past the tables)
         if (guessed_right(guess, {level[0], two})) [[likely]] break;
     }
-    auto bilinear = [&](const Texels (&c)[4], const LevelPoint& at) {
-        if constexpr (Srgb) return bilinear_fixed<Wide, kBits>(c, at.fx, at.fy);
-        else return bilinear16<Wide>(c, at.fx, at.fy);
-    };
-    Fixed8 w[D];
-    if (two)
-        for (int k = 0; k < D; ++k) spread<Wide>(to_int(lod[k].weight * float(1 << kBits)) << (16 - kBits), w[k]);  // (weight in [0, 1): truncation is the floor)
-    for (int g = 0; g < G; ++g) {
-        Fixed8 f = bilinear(texel[g][0], p[g][0]);
-        if (two) {
-            const Fixed8 f1 = bilinear(texel[g][1], p[g][1]);
-            const Fixed8& wg = w[g / (G / D)];
-            f = {blend16<Wide>(f.lo, f1.lo, wg.lo), blend16<Wide>(f.hi, f1.hi, wg.hi)};
+    // The filter, on this copy's registers.
+#if SOFTRASTER_HAS_AVX2_PATH
+    if constexpr (P == Path::Avx512) {
+        i8 weight[D];  // (the second level's, of 16 bits)
+        for (int k = 0; k < D; ++k) weight[k] = to_int(lod[k].weight * float(1 << kBits)) << (16 - kBits);
+        filter_avx512<G, D, Srgb, kBits>(texel, p, weight, two, rgba);
+    } else
+#endif
+    {
+        auto bilinear = [&](const Texels (&c)[4], const LevelPoint& at) {
+            if constexpr (Srgb) return bilinear_fixed<Wide, kBits>(c, at.fx, at.fy);
+            else return bilinear16<Wide>(c, at.fx, at.fy);
+        };
+        Fixed8 w[D];
+        if (two)
+            for (int k = 0; k < D; ++k) spread<Wide>(to_int(lod[k].weight * float(1 << kBits)) << (16 - kBits), w[k]);  // (weight in [0, 1): truncation is the floor)
+        for (int g = 0; g < G; ++g) {
+            Fixed8 f = bilinear(texel[g][0], p[g][0]);
+            if (two) {
+                const Fixed8 f1 = bilinear(texel[g][1], p[g][1]);
+                const Fixed8& wg = w[g / (G / D)];
+                f = {blend16<Wide>(f.lo, f1.lo, wg.lo), blend16<Wide>(f.hi, f1.hi, wg.hi)};
+            }
+            unit_of_fixed8<Wide>(f, *rgba[g]);
         }
-        unit_of_fixed8<Wide>(f, *rgba[g]);
     }
     return true;
 }
@@ -203,11 +265,23 @@ inline bool same_quads(const f8* d0, const f8* d1) {
     return !simd::any((d0[0] != d1[0]) | (d0[1] != d1[1]) | (d0[2] != d1[2]) | (d0[3] != d1[3]));
 }
 
+#if SOFTRASTER_HAS_AVX2_PATH
+// The AVX-512 copy, flattened as simd::run_avx2 flattens the AVX2 one.
+template <bool Srgb, class F>
+[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] SOFTRASTER_FLATTEN bool run_avx512(const F& f) {
+    return f.template operator()<Path::Avx512, Srgb>();
+}
+#endif
 // Each entry point: a copy per kind of texel and CPU path, chosen before the call (one
 // function holding both kinds' lookups spilled more of its registers).
 template <class F>
 inline bool per_kind_and_path(const PotLevels& t, const F& f) {
-    auto kind = [&]<bool Srgb>() { return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() { return f.template operator()<Wide, Srgb>(); }); };
+    auto kind = [&]<bool Srgb>() {
+#if SOFTRASTER_HAS_AVX2_PATH
+        if (simd::cpu_has_avx512()) return run_avx512<Srgb>(f);
+#endif
+        return simd::on_best_path<simd::kGenericApart>([&]<bool Wide>() { return f.template operator()<Wide ? Path::Avx2 : Path::Generic, Srgb>(); });
+    };
     return t.fixed_texels ? kind.template operator()<true>() : kind.template operator()<false>();
 }
 
@@ -215,16 +289,16 @@ bool sample_uniform_pair(const PotLevels& t, const f8& u0, const f8& v0, const f
                          const std::array<f8, 4>& d1, MipFilter mip, std::array<f8, 4>& rgba0, std::array<f8, 4>& rgba1) {
     // (All of it in the lambda, the CPU path's own copy: vectors compared or copied outside it
     // would be compiled without AVX, lane by lane.)
-    return per_kind_and_path(t, [&]<bool Wide, bool Srgb>() {
+    return per_kind_and_path(t, [&]<Path P, bool Srgb>() {
         const f8* const u[2] = {&u0, &u1};
         const f8* const v[2] = {&v0, &v1};
         std::array<f8, 4>* const rgba[2] = {&rgba0, &rgba1};
-        if (!same_quads<Wide>(d0.data(), d1.data())) {  // (two groups of different quads: a level of detail each)
+        if (!same_quads<P != Path::Generic>(d0.data(), d1.data())) {  // (two groups of different quads: a level of detail each)
             const f8* const d[2] = {d0.data(), d1.data()};
-            return sample_uniform_fixed<Wide, 2, 2, Srgb>(t, u, v, d, mip, rgba);
+            return sample_uniform_fixed<P, 2, 2, Srgb>(t, u, v, d, mip, rgba);
         }
         const f8* const d[1] = {d0.data()};
-        return sample_uniform_fixed<Wide, 2, 1, Srgb>(t, u, v, d, mip, rgba);
+        return sample_uniform_fixed<P, 2, 1, Srgb>(t, u, v, d, mip, rgba);
     });
 }
 
@@ -234,31 +308,31 @@ bool sample_uniform_four(const PotLevels& t, const f8* const (&uv)[4], MipFilter
     // out the numbers itself: with the two copies in one function, or the numbers picked out
     // by a helper both share, the first copy's code changed and bench_trilinear took 3 to 6%
     // longer (docs/performance.md).
-    const bool pairs = per_kind_and_path(t, [&]<bool Wide, bool Srgb>() {
+    const bool pairs = per_kind_and_path(t, [&]<Path P, bool Srgb>() {
         const f8* const d[4] = {uv[0] + 2, uv[1] + 2, uv[2] + 2, uv[3] + 2};
-        if (!same_quads<Wide>(d[0], d[1]) || !same_quads<Wide>(d[2], d[3])) return false;
+        if (!same_quads<P != Path::Generic>(d[0], d[1]) || !same_quads<P != Path::Generic>(d[2], d[3])) return false;
         const f8* const u[4] = {uv[0], uv[1], uv[2], uv[3]};
         const f8* const v[4] = {uv[0] + 1, uv[1] + 1, uv[2] + 1, uv[3] + 1};
         const f8* const sets[2] = {d[0], d[2]};
         std::array<f8, 4>* const out[4] = {&rgba[0], &rgba[1], &rgba[2], &rgba[3]};
-        return sample_uniform_fixed<Wide, 4, 2, Srgb>(t, u, v, sets, mip, out);
+        return sample_uniform_fixed<P, 4, 2, Srgb>(t, u, v, sets, mip, out);
     });
-    return pairs || per_kind_and_path(t, [&]<bool Wide, bool Srgb>() {
+    return pairs || per_kind_and_path(t, [&]<Path P, bool Srgb>() {
         const f8* const u[4] = {uv[0], uv[1], uv[2], uv[3]};
         const f8* const v[4] = {uv[0] + 1, uv[1] + 1, uv[2] + 1, uv[3] + 1};
         const f8* const d[4] = {uv[0] + 2, uv[1] + 2, uv[2] + 2, uv[3] + 2};
         std::array<f8, 4>* const out[4] = {&rgba[0], &rgba[1], &rgba[2], &rgba[3]};
-        return sample_uniform_fixed<Wide, 4, 4, Srgb>(t, u, v, d, mip, out);
+        return sample_uniform_fixed<P, 4, 4, Srgb>(t, u, v, d, mip, out);
     });
 }
 
 bool sample_uniform(const PotLevels& t, const f8& u, const f8& v, const std::array<f8, 4>& d, MipFilter mip, std::array<f8, 4>& rgba) {
-    return per_kind_and_path(t, [&]<bool Wide, bool Srgb>() {
+    return per_kind_and_path(t, [&]<Path P, bool Srgb>() {
         const f8* const uu[1] = {&u};
         const f8* const vv[1] = {&v};
         const f8* const dd[1] = {d.data()};
         std::array<f8, 4>* const out[1] = {&rgba};
-        return sample_uniform_fixed<Wide, 1, 1, Srgb>(t, uu, vv, dd, mip, out);
+        return sample_uniform_fixed<P, 1, 1, Srgb>(t, uu, vv, dd, mip, out);
     });
 }
 

@@ -47,7 +47,7 @@ TEST(Determinism, SamePictureAt1To8Threads) {
     }
 }
 
-TEST(Determinism, SamePictureOnTheGenericAndTheAvx2Path) {
+TEST(Determinism, SamePictureOnEveryCpuPath) {
     if (kUnderSanitizers) GTEST_SKIP() << "under the sanitizers, SamePictureAt1To8Threads draws on both paths";
     simd::use_generic_path(false);
     if (!simd::wide_path_runs()) GTEST_SKIP() << "no AVX2 path here (this CPU, or a SOFTRASTER_GENERIC_ONLY build): only the generic path runs";
@@ -58,6 +58,12 @@ TEST(Determinism, SamePictureOnTheGenericAndTheAvx2Path) {
         simd::use_generic_path(false);
         const Image fast = SceneRenderer(scene, 2).render();
         EXPECT_TRUE(generic.pixels == fast.pixels) << f.filename();
+        if (simd::cpu_has_avx512()) {  // (and the common texture lookup's AVX-512 copy off: all AVX2)
+            simd::use_avx512(false);
+            const Image avx2 = SceneRenderer(scene, 2).render();
+            simd::use_avx512(true);
+            EXPECT_TRUE(avx2.pixels == fast.pixels) << f.filename() << " with AVX-512 and without";
+        }
         // Something was drawn: more than the background's one color.
         EXPECT_NE(std::adjacent_find(fast.pixels.begin(), fast.pixels.end(), std::not_equal_to<>()), fast.pixels.end()) << f.filename();
     }

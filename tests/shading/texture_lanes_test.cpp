@@ -59,7 +59,8 @@ TEST(Texture, EightLookupsAtOnceEqualOneAtATime) {
 
 // The common case has a path of its own (sample_uniform, and sample_uniform_srgb for sRGB
 // textures: a power-of-two texture that repeats, bilinear both ways, every lane on the same
-// levels): it too gives sample()'s bits, on both CPU paths, on square and long textures
+// levels): it too gives sample()'s bits, on each CPU path (its AVX-512 copy too, where the
+// CPU has it), on square and long textures
 // (whose levels stop halving one side at 1), for footprints from far below a texel to far
 // past the last level, and for coordinates of any size.
 TEST(Texture, UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime) {
@@ -82,14 +83,11 @@ TEST(Texture, UniformLookupsOnPowerOfTwoTexturesEqualOneAtATime) {
                                       std::tuple{1, 1, ColorSpace::Linear}, std::tuple{64, 64, ColorSpace::Srgb}, std::tuple{128, 8, ColorSpace::Srgb},
                                       std::tuple{1, 1, ColorSpace::Srgb}}) {
         const Texture t = pattern_texture(w, h, color);
-        for (bool generic : {false, true}) {
-            simd::use_generic_path(generic);
+        for_each_cpu_path([&](const std::string& path) {
             for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear})
                 for (int trial = 0; trial < 400; ++trial)
-                    check(t, Sampler{Filter::Bilinear, Filter::Bilinear, mip, Wrap::Repeat, Wrap::Repeat, glm::vec4(0.0f), 1}, trial,
-                          generic ? "generic" : "best");
-        }
-        simd::use_generic_path(false);
+                    check(t, Sampler{Filter::Bilinear, Filter::Bilinear, mip, Wrap::Repeat, Wrap::Repeat, glm::vec4(0.0f), 1}, trial, path.c_str());
+        });
     }
 }
 
@@ -105,38 +103,35 @@ TEST(Texture, UniformLookupsAfterOtherLevelsEqualOneAtATime) {
         const float d = texels_per_pixel / float(t.width());
         expect_eight_equal_one_at_a_time(t, s, u, v, {simd::splat(d), simd::splat(0.0f), simd::splat(0.0f), simd::splat(d)}, what);
     };
-    for (bool generic : {false, true}) {
-        simd::use_generic_path(generic);
-        lookups(large, 300.0f, "large, levels 8 and 9");
-        lookups(small, 0.5f, "small, magnified");
-        lookups(large, 2.0f, "large, level 1 alone");
-        lookups(large, 2.5f, "large, levels 1 and 2");
-        lookups(large, 2.0f, "large, level 1 alone again");
-    }
-    simd::use_generic_path(false);
+    for_each_cpu_path([&](const std::string& path) {
+        lookups(large, 300.0f, "large, levels 8 and 9 " + path);
+        lookups(small, 0.5f, "small, magnified " + path);
+        lookups(large, 2.0f, "large, level 1 alone " + path);
+        lookups(large, 2.5f, "large, levels 1 and 2 " + path);
+        lookups(large, 2.0f, "large, level 1 alone again " + path);
+    });
 }
 
 namespace {
 // The cases of the tests of lookups in groups (sample_pair, sample_four): f(texture,
-// sampler, trial, what) for linear and sRGB textures, power-of-two sides or not, on both CPU
-// paths, each mip filter and wrap mode, 150 trials each; it stops at the first failure.
+// sampler, trial, what) for linear and sRGB textures, power-of-two sides or not, on each CPU
+// path, each mip filter and wrap mode, 150 trials each; it stops at the first failure.
 template <class F>
 void for_each_grouped_lookup_case(F&& f) {
     for (const auto& [w, h, color] : {std::tuple{64, 64, ColorSpace::Linear}, std::tuple{128, 8, ColorSpace::Linear}, std::tuple{1, 1, ColorSpace::Linear},
                                       std::tuple{48, 32, ColorSpace::Linear}, std::tuple{64, 64, ColorSpace::Srgb}}) {
         const Texture t = pattern_texture(w, h, color);
-        for (bool generic : {false, true}) {
-            simd::use_generic_path(generic);
+        for_each_cpu_path([&](const std::string& path) {
             for (MipFilter mip : {MipFilter::None, MipFilter::Nearest, MipFilter::Linear})
                 for (Wrap wrap : {Wrap::Repeat, Wrap::Clamp})
                     for (int trial = 0; trial < 150; ++trial) {
                         Sampler s = Sampler::plain(Filter::Bilinear, wrap);
                         s.mip = mip;
-                        f(t, s, trial, std::to_string(w) + "x" + std::to_string(h) + " trial " + std::to_string(trial) + (generic ? " generic" : ""));
-                        if (::testing::Test::HasFatalFailure()) return simd::use_generic_path(false);
+                        f(t, s, trial, std::to_string(w) + "x" + std::to_string(h) + " trial " + std::to_string(trial) + " " + path);
+                        if (::testing::Test::HasFatalFailure()) return;
                     }
-        }
-        simd::use_generic_path(false);
+        });
+        if (::testing::Test::HasFatalFailure()) return;
     }
 }
 // got and want the same bits in every lane and channel.

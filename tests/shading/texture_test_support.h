@@ -35,4 +35,18 @@ inline void expect_eight_equal_one_at_a_time(const Texture& t, const Sampler& s,
     }
 }
 
+// f(name) on each CPU path a lookup can take (pipeline/simd.h): the best this CPU has (the
+// common lookup's AVX-512 copy where it runs), the AVX2 one, and the generic one; then the
+// best again. (On a CPU without AVX-512 the first two are the same; without AVX2, all three.)
+template <class F>
+void for_each_cpu_path(F&& f) {
+    for (const char* path : {"best", "avx2", "generic"}) {
+        simd::use_avx512(path == std::string("best"));
+        simd::use_generic_path(path == std::string("generic"));
+        f(std::string(path));
+        if (::testing::Test::HasFatalFailure()) break;
+    }
+    simd::use_avx512(true), simd::use_generic_path(false);
+}
+
 }  // namespace softraster::test

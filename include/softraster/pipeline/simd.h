@@ -36,6 +36,25 @@ inline bool cpu_has_avx2() {
 #endif
 }
 
+// Whether this CPU also runs AVX-512 (F, BW, VL, DQ) where the AVX2 path runs: the common
+// texture lookup (src/shading/texture_uniform.cpp) then takes a third copy of its own, two
+// lanes' texels to a register and its 16-bit filter on 32 lanes, for the same bits.
+// SOFTRASTER_NO_AVX512=1 in the environment, or use_avx512(false), keeps it on the AVX2 copy.
+inline std::atomic<bool>& avx512_allowed() {
+    static std::atomic<bool> allowed{std::getenv("SOFTRASTER_NO_AVX512") == nullptr};
+    return allowed;
+}
+inline void use_avx512(bool on) { avx512_allowed() = on; }
+inline bool cpu_has_avx512() {
+#if defined(__x86_64__) || defined(__i386__)
+    static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
+                            __builtin_cpu_supports("avx512dq");
+    return has && avx512_allowed().load(std::memory_order_relaxed) && cpu_has_avx2();
+#else
+    return false;
+#endif
+}
+
 // The AVX2 copy: flatten inlines everything the entry point calls, so the whole loop nest
 // really is AVX2 code (a call into an ordinary function would leave it for SSE code). Off in
 // sanitizer builds, which it makes very slow to compile. The generic copy is compiled as
