@@ -16,15 +16,15 @@
 
 namespace softraster::lanes::avx512 {
 
-// A register's halves, two halves joined, and the conversions to 32-bit lanes and floats,
-// as vector shuffles and conversions: GCC 12's intrinsics for these (_mm512_inserti64x4,
-// _mm512_extracti64x4_epi64, _mm512_cvtepu16_epi32, _mm512_cvtepi32_ps and their kind) warn
-// that their own placeholder for unused lanes is uninitialized (GCC bug 105593, mended in
-// GCC 13). The same instructions.
+// A register's halves and two halves joined, as vector shuffles: GCC 12's intrinsics for
+// these (_mm512_inserti64x4, _mm512_extracti64x4_epi64 and their kind) warn that their own
+// placeholder for unused lanes is uninitialized (GCC bug 105593, mended in GCC 13). The same
+// instructions.
 using i64x2 = long long __attribute__((vector_size(16)));
 using i64x4 = long long __attribute__((vector_size(32)));
 using i32x16 = int32_t __attribute__((vector_size(64)));
 using f32x16 = float __attribute__((vector_size(64)));
+[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline i32x16 splat(int32_t a) { return i32x16(_mm512_set1_epi32(a)); }
 [[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m512i join(__m256i low, __m256i high) { return __m512i(__builtin_shufflevector(i64x4(low), i64x4(high), 0, 1, 2, 3, 4, 5, 6, 7)); }
 [[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m256i low_half(__m512i v) { return __m256i(__builtin_shufflevector(v, v, 0, 1, 2, 3)); }
 [[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m256i high_half(__m512i v) { return __m256i(__builtin_shufflevector(v, v, 4, 5, 6, 7)); }
@@ -96,8 +96,10 @@ template <int Bits>
     return blend(blend(c[0], c[1], wx), blend(c[2], c[3], wx), wy);
 }
 // Sixteen 16-bit values as floats in [0, 1] (unit_of_fixed).
+// (The zero-masked conversions: the plain ones warn as above, and GCC splits the vector
+// conversions into 256-bit halves.)
 [[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline f32x16 unit_floats(__m256i values) {
-    return __builtin_convertvector(__builtin_convertvector(u16x16(values), i32x16), f32x16) * Texture::kFixedToUnit;
+    return f32x16(_mm512_maskz_cvtepi32_ps(0xffff, _mm512_maskz_cvtepu16_epi32(0xffff, values))) * Texture::kFixedToUnit;
 }
 // The eight texels' channels as floats in [0, 1] (unit_of_fixed8): one permute sorts the 32
 // values by channel, and each half widens to two channels' 32-bit lanes.

@@ -62,6 +62,27 @@ template <int Bits>
     out = {i8(index), i8(_mm256_and_si256(x, low)), i8(_mm256_and_si256(y, low))};
 }
 #endif
+#if SOFTRASTER_HAS_AVX2_PATH
+// The same for two groups at once, in 512-bit registers (the AVX-512 copy): the same
+// operations on sixteen lanes, then each group's half.
+template <int Bits>
+[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline void level_points_avx512(const PotLevels& t, const i8& fu0, const i8& fu1, const i8& fv0,
+                                                                               const i8& fv1, int k, LevelPoint& out0, LevelPoint& out1) {
+    using v16 = avx512::i32x16;
+    const LevelTables& n = *t.tables;
+    constexpr int kOne = 1 << Bits;
+    const v16 fu = v16(avx512::join(__m256i(fu0), __m256i(fu1))), fv = v16(avx512::join(__m256i(fv0), __m256i(fv1)));
+    const v16 x = (fu >> avx512::splat(n.shift_u[k])) - kOne / 2, y = (fv >> avx512::splat(n.shift_v[k])) - kOne / 2;
+    const v16 i0 = (x >> Bits) & avx512::splat(n.mask_w[k]), j0 = (y >> Bits) & avx512::splat(n.mask_h[k]);
+    // tile_index8 as level_point_avx2 works it out: (((j0 / 4) tiles_x + i0 / 4) 5 + j0 % 4) 5 + i0 % 4 + offset.
+    const v16 tile = ((j0 >> 2) << avx512::splat(n.log2_tiles_x[k])) + (i0 >> 2);
+    const v16 row = (tile << 2) + tile + (j0 & 3);
+    const v16 index = (row << 2) + row + (i0 & 3) + avx512::splat(n.offset[k]);
+    const v16 fx = x & (kOne - 1), fy = y & (kOne - 1);
+    out0 = {i8(avx512::low_half(__m512i(index))), i8(avx512::low_half(__m512i(fx))), i8(avx512::low_half(__m512i(fy)))};
+    out1 = {i8(avx512::high_half(__m512i(index))), i8(avx512::high_half(__m512i(fx))), i8(avx512::high_half(__m512i(fy)))};
+}
+#endif
 // The CPU path's copy.
 template <bool Wide, int Bits>
 inline void level_point_on(const PotLevels& t, const i8& fu, const i8& fv, int k, LevelPoint& out) {
@@ -199,8 +220,15 @@ inline bool sample_uniform_fixed(const PotLevels& t, const f8* const (&u)[G], co
     bool two = false;  // a second level to blend in
     for (;;) {  // (twice only after a wrong guess, which guessed_right corrects)
         const LevelGuess guess = t_last_levels;
-        for (int g = 0; g < G; ++g)
-            for (int k = 0; k < (guess.two ? 2 : 1); ++k) level_point_on<Wide, kBits>(t, fu[g], fv[g], guess.level + k, p[g][k]);
+#if SOFTRASTER_HAS_AVX2_PATH
+        if constexpr (P == Path::Avx512 && G % 2 == 0) {
+            for (int g = 0; g < G; g += 2)
+                for (int k = 0; k < (guess.two ? 2 : 1); ++k)
+                    level_points_avx512<kBits>(t, fu[g], fu[g + 1], fv[g], fv[g + 1], guess.level + k, p[g][k], p[g + 1][k]);
+        } else
+#endif
+            for (int g = 0; g < G; ++g)
+                for (int k = 0; k < (guess.two ? 2 : 1); ++k) level_point_on<Wide, kBits>(t, fu[g], fv[g], guess.level + k, p[g][k]);
         load(guess.two ? 2 : 1);
         int level[D];
         bool uniform = true;
