@@ -54,8 +54,12 @@ using f32x16 = float __attribute__((vector_size(64)));
 // The same for an sRGB texture's decoded texels (load_footprints_fixed<true>): each lane's
 // two 16-byte rows, four lanes' rows to a register, and one two-register permute per corner.
 [[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m512i two_texels_of_four_lanes(const uint64_t* q, const uint32_t* at) {
-    auto load = [&](int k) { return i64x2(_mm_loadu_si128(reinterpret_cast<const __m128i*>(q + at[k]))); };
-    return join(__m256i(__builtin_shufflevector(load(0), load(1), 0, 1, 2, 3)), __m256i(__builtin_shufflevector(load(2), load(3), 0, 1, 2, 3)));
+    auto row = [&](int k) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(q + at[k])); };
+    // (The first row in all four places, then each other row in its own: a load and three
+    // inserts that take their rows from memory; a broadcast zero-masked with all lanes kept
+    // is the plain broadcast, whose own intrinsic warns as above.)
+    const __m512i first = _mm512_maskz_broadcast_i32x4(0xffff, row(0));
+    return _mm512_inserti32x4(_mm512_inserti32x4(_mm512_inserti32x4(first, row(1), 1), row(2), 2), row(3), 3);
 }
 [[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline void load_footprints_fixed(const uint64_t* p, const i8& index, __m512i (&corner)[4]) {
     alignas(32) uint32_t at[simd::kLanes];
