@@ -10,8 +10,9 @@ Each round runs `PROGRAM bench SCENE --threads T --frames F --json` once for eac
 OLD first in the odd rounds and NEW first in the even ones (AB BA AB ...), so that a machine
 whose speed drifts, or a cache the first run warms, favours neither. Per scene it prints
 the median of each program's frame times (each run's own median) and the median of the
-rounds' ratios NEW / OLD, which one slow spell does not move. Exit status 2 on bad
-arguments, 1 on a failed run (as bench-compare.py)."""
+rounds' ratios NEW / OLD, which one slow spell does not move, and the median of each run's
+fastest frame, which a run slowed throughout by a busy neighbour moves least. Exit status 2
+on bad arguments, 1 on a failed run (as bench-compare.py)."""
 import argparse, importlib.util, os, statistics, sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -32,7 +33,9 @@ def scene_path(name):
 
 
 def frame_ms(program, scene, threads, frames):
-    return float(bench_compare.run_json([program, 'bench', scene, '--threads', str(threads), '--frames', str(frames), '--json'])['median_ms'])
+    """A run's median and fastest frame times."""
+    j = bench_compare.run_json([program, 'bench', scene, '--threads', str(threads), '--frames', str(frames), '--json'])
+    return float(j['median_ms']), float(j['min_ms'])
 
 
 def main():
@@ -51,15 +54,18 @@ def main():
         p.error('--rounds, --threads and --frames must be at least 1')
     scenes = [scene_path(s) for s in a.scenes]
     for scene in scenes:
-        programs, times = {'old': a.old, 'new': a.new}, {'old': [], 'new': []}
+        programs, times, fastest = {'old': a.old, 'new': a.new}, {'old': [], 'new': []}, {'old': [], 'new': []}
         for k in range(a.rounds):
             for which in (('old', 'new') if k % 2 == 0 else ('new', 'old')):  # OLD first in rounds 0, 2, 4, ...
-                times[which].append(frame_ms(programs[which], scene, a.threads, a.frames))
+                median, least = frame_ms(programs[which], scene, a.threads, a.frames)
+                times[which].append(median), fastest[which].append(least)
         old, new = statistics.median(times['old']), statistics.median(times['new'])
         ratio = statistics.median(n / o for o, n in zip(times['old'], times['new']))
         print('%s: old %.2f ms, new %.2f ms (%+.1f%%; median of the rounds\' ratios %+.1f%%)' %
               (os.path.basename(scene), old, new, (new / old - 1) * 100, (ratio - 1) * 100))
         print('  old: %s\n  new: %s' % (' '.join('%.2f' % t for t in times['old']), ' '.join('%.2f' % t for t in times['new'])))
+        old_f, new_f = statistics.median(fastest['old']), statistics.median(fastest['new'])
+        print('  fastest frames, median over the rounds: old %.2f ms, new %.2f ms (%+.1f%%)' % (old_f, new_f, (new_f / old_f - 1) * 100))
 
 
 if __name__ == '__main__':
