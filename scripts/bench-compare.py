@@ -42,7 +42,9 @@ def machine():
     except OSError:
         pass
     flags = open('/proc/cpuinfo').read()
-    simd = 'AVX2' if ' avx2' in flags else ('SSE4.2' if 'sse4_2' in flags else 'baseline')
+    # (AVX-512 as softraster's texture lookup takes it: BW, VL and DQ; pipeline/simd.h)
+    avx512 = all(' %s' % f in flags for f in ('avx512bw', 'avx512vl', 'avx512dq'))
+    simd = 'AVX-512' if avx512 else 'AVX2' if ' avx2' in flags else ('SSE4.2' if 'sse4_2' in flags else 'baseline')
     return '%s, %d cores, %s, %s' % (model or platform.processor(), os.cpu_count(), simd, platform.platform())
 
 
