@@ -134,6 +134,15 @@ void for_each_grouped_lookup_case(F&& f) {
         if (::testing::Test::HasFatalFailure()) return;
     }
 }
+// Now and then coordinates far from the texture (up to 4 10^5, whose fractions the wrap must
+// still find), or past where the lookups take them as 0 (10^6), or not numbers at all: the
+// grouped lookups reduce them on their own (texture_uniform.cpp), not as sample8 does.
+void far_and_odd_coordinates(int trial, simd::f8& u, simd::f8& v) {
+    const float odd[] = {NAN, INFINITY, -INFINITY, 3e38f, -2e7f, -5e5f, 1.5e6f, -0.0f};
+    if (trial % 7 == 3) u = u * 1.0e4f, v = v * -1.0e4f;
+    if (trial % 11 == 5)
+        for (int l = 0; l < simd::kLanes; ++l) u[l] = odd[l], v[l] = odd[7 - l];
+}
 // got and want the same bits in every lane and channel.
 void expect_same_lookups(const std::array<simd::f8, 4>& got, const std::array<simd::f8, 4>& want, const std::string& what) {
     for (int l = 0; l < simd::kLanes; ++l)
@@ -172,6 +181,7 @@ TEST(Texture, FourGroupLookupsEqualEightAtATime) {
                     for (size_t k = 0; k < 4; ++k) d[g][k][l] = d[0][k][l] * apart * (1.0f + 0.1f * unit(rng));
                 }
             }
+        for (size_t g = 0; g < 4; ++g) far_and_odd_coordinates(trial, u[g], v[g]);
         std::array<simd::f8, 4> got[4], want[4];
         std::array<simd::f8, 6> in[4];  // (u, v, d in a row, as a shader's varyings hold them)
         for (size_t g = 0; g < 4; ++g) in[g] = {u[g], v[g], d[g][0], d[g][1], d[g][2], d[g][3]};
@@ -206,6 +216,7 @@ TEST(Texture, PairLookupsEqualEightAtATime) {
                 for (size_t k = 0; k < 4; ++k) d1[k][l] = d0[k][l] * apart * (1.0f + 0.1f * unit(rng));
             }
         }
+        far_and_odd_coordinates(trial, u0, v0), far_and_odd_coordinates(trial, u1, v1);
         std::array<simd::f8, 4> got0, got1, want0, want1;
         t.sample_pair(u0, v0, u1, v1, d0, d1, s, got0, got1);
         t.sample8(u0, v0, d0, s, want0);
