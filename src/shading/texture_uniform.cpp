@@ -255,13 +255,14 @@ inline bool sample_uniform_fixed(const PotLevels& t, const f8* const (&u)[G], co
         if (level[0] + (two ? 1 : 0) >= 16) return false;  // (past the tables)
         if (guessed_right(guess, {level[0], two})) [[likely]] break;
     }
-    // The filter, on this copy's registers.
-#if SOFTRASTER_HAS_AVX2_PATH
-    if constexpr (P == Path::Avx512) {
-        i8 weight[D];  // (the second level's, of 16 bits)
+    // The filter, on this copy's registers, with each set's weight of the second level as a
+    // 16-bit fraction (weight in [0, 1): truncation is the floor).
+    i8 weight[D];
+    if (two)
         for (int k = 0; k < D; ++k) weight[k] = to_int(lod[k].weight * float(1 << kBits)) << (16 - kBits);
-        filter_avx512<G, D, Srgb, kBits>(texel, p, weight, two, rgba);
-    } else
+#if SOFTRASTER_HAS_AVX2_PATH
+    if constexpr (P == Path::Avx512) filter_avx512<G, D, Srgb, kBits>(texel, p, weight, two, rgba);
+    else
 #endif
     {
         auto bilinear = [&](const Texels (&c)[4], const LevelPoint& at) {
@@ -270,7 +271,7 @@ inline bool sample_uniform_fixed(const PotLevels& t, const f8* const (&u)[G], co
         };
         Fixed8 w[D];
         if (two)
-            for (int k = 0; k < D; ++k) spread<Wide>(to_int(lod[k].weight * float(1 << kBits)) << (16 - kBits), w[k]);  // (weight in [0, 1): truncation is the floor)
+            for (int k = 0; k < D; ++k) spread<Wide>(weight[k], w[k]);
         for (int g = 0; g < G; ++g) {
             Fixed8 f = bilinear(texel[g][0], p[g][0]);
             if (two) {
