@@ -16,15 +16,14 @@
 
 namespace softraster::lanes::avx512 {
 
+using i64x4 = long long __attribute__((vector_size(32)));
+using i32x16 = int32_t __attribute__((vector_size(64)));  // (arithmetic with operators, as simd::i8)
+using f32x16 = float __attribute__((vector_size(64)));
+[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline i32x16 splat(int32_t a) { return i32x16(_mm512_set1_epi32(a)); }
 // A register's halves and two halves joined, as vector shuffles: GCC 12's intrinsics for
 // these (_mm512_inserti64x4, _mm512_extracti64x4_epi64 and their kind) warn that their own
 // placeholder for unused lanes is uninitialized (GCC bug 105593, mended in GCC 13). The same
 // instructions.
-using i64x2 = long long __attribute__((vector_size(16)));
-using i64x4 = long long __attribute__((vector_size(32)));
-using i32x16 = int32_t __attribute__((vector_size(64)));
-using f32x16 = float __attribute__((vector_size(64)));
-[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline i32x16 splat(int32_t a) { return i32x16(_mm512_set1_epi32(a)); }
 [[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m512i join(__m256i low, __m256i high) { return __m512i(__builtin_shufflevector(i64x4(low), i64x4(high), 0, 1, 2, 3, 4, 5, 6, 7)); }
 [[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m256i low_half(__m512i v) { return __m256i(__builtin_shufflevector(v, v, 0, 1, 2, 3)); }
 [[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m256i high_half(__m512i v) { return __m256i(__builtin_shufflevector(v, v, 4, 5, 6, 7)); }
