@@ -8,10 +8,20 @@
 
 #include "cli/commands.h"
 #include "softraster/pipeline/resolve.h"
+#include "softraster/pipeline/simd.h"
 #include "softraster/scene/animation.h"
 #include "softraster/scene/scene_renderer.h"
 
 namespace softraster::cli {
+
+namespace {
+// The CPU copies the frames ran on (pipeline/simd.h), so that times taken on one machine
+// with SOFTRASTER_GENERIC or SOFTRASTER_NO_AVX512 set, or on another CPU, say so.
+const char* cpu_path() {
+    if (simd::cpu_has_avx512()) return "avx512";  // (the texture lookup's; the rest AVX2)
+    return simd::wide_path_runs() ? "avx2" : "generic";
+}
+}  // namespace
 
 int run_bench(const BenchOptions& opt) {
     const Scene scene = load_scene(opt.scene);
@@ -50,12 +60,12 @@ int run_bench(const BenchOptions& opt) {
     if (opt.json) {
         std::printf("{\"renderer\": \"softraster\", \"scene\": \"%s\", \"threads\": %u, \"frames\": %d, \"median_ms\": %.3f, "
                     "\"min_ms\": %.3f, \"max_ms\": %.3f, \"triangles\": %zu, \"triangles_per_s\": %.0f, "
-                    "\"fragments_shaded\": %llu, \"fragments_per_s\": %.0f, \"orbit\": %s, \"fps\": %.2f}\n",
+                    "\"fragments_shaded\": %llu, \"fragments_per_s\": %.0f, \"orbit\": %s, \"fps\": %.2f, \"cpu_path\": \"%s\"}\n",
                     opt.scene.c_str(), threads, opt.frames, median, ms.front(), ms.back(), triangles, tris_per_s,
-                    static_cast<unsigned long long>(stats.fragments_shaded), frags_per_s, opt.orbit ? "true" : "false", fps);
+                    static_cast<unsigned long long>(stats.fragments_shaded), frags_per_s, opt.orbit ? "true" : "false", fps, cpu_path());
     } else {
-        std::printf("%s: %dx%d, %d sample(s), %zu triangles, %u thread(s), %d frames after %d warm-up\n",
-                    opt.scene.c_str(), scene.width, scene.height, scene.samples, triangles, threads, opt.frames, opt.warmup);
+        std::printf("%s: %dx%d, %d sample(s), %zu triangles, %u thread(s), %d frames after %d warm-up, %s code\n",
+                    opt.scene.c_str(), scene.width, scene.height, scene.samples, triangles, threads, opt.frames, opt.warmup, cpu_path());
         std::printf("  median %.2f ms   min %.2f ms   max %.2f ms   %.1f frames/s%s\n", median, ms.front(), ms.back(), fps,
                     opt.orbit ? " (one turn)" : "");
         std::printf("  %.1f M triangles/s   %.1f M fragments shaded/s (%llu per frame)\n", tris_per_s / 1e6,

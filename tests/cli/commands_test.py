@@ -117,6 +117,17 @@ except ValueError:
 if not (b.get('frames') == 3 and b.get('threads') == 2 and b.get('triangles') == 288 and b.get('fragments_shaded', 0) > 0
         and 0 < b.get('min_ms', 0) <= b.get('median_ms', 0) <= b.get('max_ms', 0)):
     failures.append('bench --json should report 3 frames of 288 triangles: %d %r %s' % (r.returncode, b, r.stderr))
+# ... and the CPU copies it ran on: the generic one when forced, never AVX-512 when that is off.
+for env, allowed in (({}, ('avx512', 'avx2', 'generic')), ({'SOFTRASTER_GENERIC': '1'}, ('generic',)),
+                     ({'SOFTRASTER_NO_AVX512': '1'}, ('avx2', 'generic'))):
+    r = subprocess.run([exe, 'bench', spheres, '--frames', '1', '--warmup', '0', '--json'], capture_output=True, text=True,
+                       env=dict(os.environ, **env))
+    try:
+        path = json.loads(r.stdout).get('cpu_path') if r.returncode == 0 else None
+    except ValueError:
+        path = None
+    if path not in allowed:
+        failures.append('bench --json with %r should name its CPU path, one of %r: %r %s' % (env, allowed, path, r.stderr))
 
 if failures:
     print('FAILED:\n  ' + '\n  '.join(failures))
