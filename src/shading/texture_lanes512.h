@@ -9,26 +9,11 @@
 #include "texture_lanes.h"
 
 #if SOFTRASTER_HAS_AVX2_PATH
-#include <immintrin.h>
-
-// The AVX-512 copy's instructions (with AVX2's, which it calls too).
-#define SOFTRASTER_AVX512_TARGET_NAMES "avx2,fma,avx512f,avx512bw,avx512vl,avx512dq"
+#include "softraster/pipeline/simd_avx512.h"
 
 namespace softraster::lanes::avx512 {
 
-using i64x4 = long long __attribute__((vector_size(32)));
-using i32x16 = int32_t __attribute__((vector_size(64)));  // (arithmetic with operators, as simd::i8)
-using f32x16 = float __attribute__((vector_size(64)));
-[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline i32x16 splat(int32_t a) { return i32x16(_mm512_set1_epi32(a)); }
-// A register's halves and two halves joined, as vector shuffles: GCC 12's intrinsics for
-// these (_mm512_inserti64x4, _mm512_extracti64x4_epi64 and their kind) warn that their own
-// placeholder for unused lanes is uninitialized (GCC bug 105593, mended in GCC 13). The same
-// instructions.
-[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m512i join(__m256i low, __m256i high) { return __m512i(__builtin_shufflevector(i64x4(low), i64x4(high), 0, 1, 2, 3, 4, 5, 6, 7)); }
-[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m256i low_half(__m512i v) { return __m256i(__builtin_shufflevector(v, v, 0, 1, 2, 3)); }
-[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline __m256i high_half(__m512i v) { return __m256i(__builtin_shufflevector(v, v, 4, 5, 6, 7)); }
-[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline f8 low_half(f32x16 v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7); }
-[[gnu::target(SOFTRASTER_AVX512_TARGET_NAMES)]] inline f8 high_half(f32x16 v) { return __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15); }
+using simd::avx512::f32x16, simd::avx512::i32x16, simd::avx512::splat, simd::avx512::join, simd::avx512::low_half, simd::avx512::high_half;
 
 // The four texels of each lane's bilinear footprint (load_footprints<true>): one 32-byte
 // load per lane as there, two lanes' loads to a register, and two rounds of two-register

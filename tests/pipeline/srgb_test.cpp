@@ -12,6 +12,7 @@
 
 #include "softraster/framebuffer.h"
 #include "softraster/srgb.h"
+#include "softraster/srgb_avx512.h"
 
 using namespace softraster;
 
@@ -41,7 +42,9 @@ TEST(Srgb, EveryFixedPointDecodeLeadsBackToItsByte) {
     const srgb::Tables& t = srgb::tables();
     for (int k = 0; k < 256; ++k) {
         EXPECT_EQ(t.decode_fixed[size_t(k)], uint16_t(std::lround(65280.0 * decode_ref(k / 255.0)))) << k;
-        if (k > 0) EXPECT_LT(t.decode_fixed[size_t(k - 1)], t.decode_fixed[size_t(k)]) << k;
+        if (k > 0) {
+            EXPECT_LT(t.decode_fixed[size_t(k - 1)], t.decode_fixed[size_t(k)]) << k;
+        }
         EXPECT_EQ(int(t.code_of_fixed[t.decode_fixed[size_t(k)]]), k) << k;
     }
 }
@@ -133,6 +136,59 @@ TEST(Srgb, EightLanesAgreeWithOne) {
 #endif
     }
 }
+
+#if SOFTRASTER_HAS_AVX2_PATH
+// The AVX-512 packing (srgb_avx512.h) against the table's encode, value by value: every float
+// in [0, 1] goes through its approximation (under the sanitizers every 97th, and the 64
+// floats at and below each threshold), with alpha quantized as quantize_unorm8 does; then the
+// edges, and a batch of an odd number of groups, whose last group is packed alone.
+TEST(Srgb, SixteenLanesEncodeEveryFloatExactly) {
+    if (!simd::cpu_has_avx512()) GTEST_SKIP() << "this CPU has no AVX-512";
+    constexpr int kGroups = 16;
+    std::array<simd::f8, 4> rgba[kGroups];
+    simd::i8 out[kGroups + 1];
+    int filled = 0;
+    auto check = [&](int groups) {
+        out[groups] = simd::splat_i(-1);
+        srgb::pack_groups_avx512(rgba, groups, out);
+        for (int g = 0; g < groups; ++g)
+            for (int lane = 0; lane < simd::kLanes; ++lane) {
+                const uint32_t pixel = uint32_t(out[g][lane]);
+                for (size_t c = 0; c < 3; ++c)
+                    if (int(pixel >> (8 * c) & 255u) != srgb::encode(rgba[g][c][lane]))
+                        FAIL() << rgba[g][c][lane] << " in channel " << c << " stored as " << (pixel >> (8 * c) & 255u);
+                const float a = rgba[g][3][lane];
+                const int alpha = std::isnan(a) ? 0 : int(std::clamp(a, 0.0f, 1.0f) * 255.0f + 0.5f);  // (quantize_unorm8)
+                if (int(pixel >> 24) != alpha) FAIL() << "alpha " << a << " stored as " << (pixel >> 24);
+            }
+        ASSERT_EQ(out[groups][0], -1) << "a group past the batch written";
+        filled = 0;
+    };
+    // Values into r, g and b, alpha the same value as r (every value is an alpha somewhere).
+    auto add = [&](float l) {
+        const int g = filled / 24, channel = filled / 8 % 3, lane = filled % 8;
+        rgba[g][size_t(channel)][lane] = l;
+        if (channel == 0) rgba[g][3][lane] = l;
+        if (++filled == 24 * kGroups) check(kGroups);
+    };
+#ifdef SOFTRASTER_UNDER_SANITIZERS
+    constexpr uint32_t kStep = 97;
+#else
+    constexpr uint32_t kStep = 1;
+#endif
+    for (uint32_t bits = 0; bits <= std::bit_cast<uint32_t>(1.0f); bits += kStep) add(std::bit_cast<float>(bits));
+    const srgb::Tables& t = srgb::tables();
+    for (int k = 1; k < 256; ++k)
+        for (uint32_t below = 0; below < 64; ++below) add(std::bit_cast<float>(std::bit_cast<uint32_t>(t.threshold[size_t(k)]) - below));
+    for (float edge : {std::numeric_limits<float>::quiet_NaN(), -0.0f, -1.0f, std::numeric_limits<float>::infinity(),
+                       -std::numeric_limits<float>::infinity(), std::nextafter(1.0f, 2.0f), 2.0f, 1e30f})
+        add(edge);
+    while (filled % 24 != 0) add(0.5f);
+    check(filled / 24);
+    for (int i = 0; i < 3 * 24; ++i) add(float(i) / 71.0f);  // three groups
+    check(3);
+}
+#endif
 
 TEST(Srgb, AColorKeepsItsAlphaLinear) {
     const Rgba8 c = quantize_rgba8({0.5f, 0.0f, 1.0f, 0.5f}, ColorSpace::Srgb);
