@@ -15,8 +15,7 @@
 // measured; the approximation's 20 instructions cover sixteen lanes (docs/performance.md,
 // "The sRGB encode without a table").
 //
-// The power: with l = 2^e m, m in [0.75, 1.5) (e from the float's exponent field, after
-// subtracting 0.75's bits), l^(5/12) = 2^(5e/12) m^(5/12). 2^(5e/12) comes from a table of
+// The power: with l = 2^e m, m in [0.75, 1.5), l^(5/12) = 2^(5e/12) m^(5/12). 2^(5e/12) comes from a table of
 // the eight octaves the power's part of [0, 1] spans (one permute), and 255 * 1.055 *
 // m^(5/12) is a polynomial of degree 6 in m - 1 (a least-squares fit on Chebyshev points,
 // scripts/fit-srgb-encode.py).
@@ -54,10 +53,12 @@ const std::array<float, 16> kOctaveScale = [] {
     // (max(x, 0) takes the second operand, 0, for a NaN; below 1 keeps every lane in an
     // octave of the table, and 1's Y, 255.5, is the largest float's below it within 1e-4.)
     const __m512 l = _mm512_maskz_min_ps(kAll, _mm512_maskz_max_ps(kAll, x, _mm512_setzero_ps()), _mm512_set1_ps(std::nextafter(1.0f, 0.0f)));
+    // The octave e (as e + 8, the table's index) from the exponent field of l over 0.75's,
+    // and m, which VGETMANTPS normalizes to [0.75, 1.5) in the same octave.
     const __m512i bits = _mm512_castps_si512(l);
-    const __m512i e = _mm512_maskz_srai_epi32(kAll, _mm512_sub_epi32(bits, _mm512_set1_epi32(int32_t(std::bit_cast<uint32_t>(0.75f)))), 23);
-    const __m512 m1 = _mm512_sub_ps(_mm512_castsi512_ps(_mm512_sub_epi32(bits, _mm512_maskz_slli_epi32(kAll, e, 23))), _mm512_set1_ps(1.0f));
-    const __m512 scale = _mm512_maskz_permutexvar_ps(kAll, _mm512_add_epi32(e, _mm512_set1_epi32(8)), _mm512_loadu_ps(kOctaveScale.data()));
+    const __m512i e8 = _mm512_maskz_srai_epi32(kAll, _mm512_sub_epi32(bits, _mm512_set1_epi32(int32_t(std::bit_cast<uint32_t>(0.75f) - (8u << 23)))), 23);
+    const __m512 m1 = _mm512_sub_ps(_mm512_maskz_getmant_ps(kAll, l, _MM_MANT_NORM_p75_1p5, _MM_MANT_SIGN_src), _mm512_set1_ps(1.0f));
+    const __m512 scale = _mm512_maskz_permutexvar_ps(kAll, e8, _mm512_loadu_ps(kOctaveScale.data()));
     __m512 p = _mm512_set1_ps(kPower[6]);
     for (int i = 5; i >= 0; --i) p = _mm512_fmadd_ps(p, m1, _mm512_set1_ps(kPower[i]));
     const __m512 power = _mm512_fmadd_ps(scale, p, _mm512_set1_ps(0.5f - 255.0f * 0.055f));
