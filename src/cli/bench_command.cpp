@@ -18,7 +18,7 @@ namespace {
 // The CPU copies the frames ran on (pipeline/simd.h), so that times taken on one machine
 // with SOFTRASTER_GENERIC or SOFTRASTER_NO_AVX512 set, or on another CPU, say so.
 const char* cpu_path() {
-    if (simd::cpu_has_avx512()) return "avx512";  // (the texture lookup's; the rest AVX2)
+    if (simd::cpu_has_avx512()) return "avx512";  // (the texture lookup's and the sRGB encode's; the rest AVX2)
     return simd::wide_path_runs() ? "avx2" : "generic";
 }
 }  // namespace
