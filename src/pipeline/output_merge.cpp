@@ -5,7 +5,6 @@
 
 #include "softraster/pipeline/fragment_shading.h"
 #include "softraster/pipeline/output_merge.h"
-#include "softraster/srgb_avx512.h"
 
 namespace softraster {
 namespace {
@@ -73,29 +72,13 @@ inline void merge_groups(const BlendSettings& settings, Framebuffer& fb, const G
     if constexpr (!Blended) {
         // Opaque: each group's pixels as the framebuffer stores them, the color space chosen
         // once per batch rather than per group.
-        auto store = [&](int g, const simd::i8& packed) {
+        simd::i8 packed[GroupPlaces::kCapacity];
+        quantize_pack_groups<Wide>(p.rgba, count, blend.color_space, packed);
+        for (int g = 0; g < count; ++g) {
             Rgba8* const row = color_row(p.y[g]);
-            simd::store_group(row, p.x[g], width, simd::select(pass[g], packed, simd::load_group<simd::i8>(row, p.x[g], width)));
-        };
-        auto write = [&](ColorSpace space) {
-            const srgb::Tables& tables = srgb::tables();
-            for (int g = 0; g < count; ++g) {
-                simd::i8 packed;
-                if (space == ColorSpace::Linear) quantize_pack_rgba8<Wide>(p.rgba[g], packed);
-                else quantize_pack_srgb8<Wide>(tables, p.rgba[g], packed);
-                store(g, packed);
-            }
-        };
-        if (blend.color_space == ColorSpace::Linear) return write(ColorSpace::Linear);
-#if SOFTRASTER_HAS_AVX2_PATH
-        if (Wide && simd::cpu_has_avx512()) {  // (the whole batch encoded first, in one call)
-            simd::i8 packed[GroupPlaces::kCapacity];
-            srgb::pack_groups_avx512(p.rgba, count, packed);
-            for (int g = 0; g < count; ++g) store(g, packed[g]);
-            return;
+            simd::store_group(row, p.x[g], width, simd::select(pass[g], packed[g], simd::load_group<simd::i8>(row, p.x[g], width)));
         }
-#endif
-        return write(ColorSpace::Srgb);
+        return;
     } else {
         if (blend.mode == BlendMode::Custom) {
             RowGroups row;

@@ -130,10 +130,11 @@ private:
             b.z[g] = load(z_);
         }
         shade_(shader_, b);
+        i8 packed_groups[GroupPlaces::kCapacity];
+        quantize_pack_groups<SOFTRASTER_HAS_AVX2_PATH>(b.rgba, b.count, color_space_, packed_groups);  // (the queue runs in the AVX2 copy only)
         for (int g = 0; g < b.count; ++g) {
             const int first = g * kLanes, n = std::min(kLanes, count - first);
-            i8 packed;
-            quantize_pack_rgba8<SOFTRASTER_HAS_AVX2_PATH>(b.rgba[g], color_space_, packed);  // (the queue runs in the AVX2 copy only)
+            const i8& packed = packed_groups[g];
             for (int l = 0; l < n; ++l) {
                 const size_t slot = size_t(first + l);
                 Rgba8 c;

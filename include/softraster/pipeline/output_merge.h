@@ -26,6 +26,7 @@
 #include "softraster/pipeline/pipeline_types.h"
 #include "softraster/pipeline/simd.h"
 #include "softraster/render_state.h"
+#include "softraster/srgb_avx512.h"
 
 #if SOFTRASTER_HAS_AVX2_PATH
 #include <immintrin.h>
@@ -266,6 +267,21 @@ template <bool Wide = false>
 inline void quantize_pack_rgba8(const std::array<simd::f8, 4>& c, ColorSpace space, simd::i8& out) {
     if (space == ColorSpace::Linear) return quantize_pack_rgba8<Wide>(c, out);
     quantize_pack_srgb8<Wide>(srgb::tables(), c, out);
+}
+// A batch's groups so (out[g] for rgba[g], g < count), the color space chosen once for the
+// batch; an sRGB batch's on the AVX-512 copy where the CPU has one (srgb_avx512.h: no
+// gathers).
+template <bool Wide>
+inline void quantize_pack_groups(const std::array<simd::f8, 4>* rgba, int count, ColorSpace space, simd::i8* out) {
+    if (space == ColorSpace::Linear) {
+        for (int g = 0; g < count; ++g) quantize_pack_rgba8<Wide>(rgba[g], out[g]);
+        return;
+    }
+#if SOFTRASTER_HAS_AVX2_PATH
+    if (Wide && simd::cpu_has_avx512()) return srgb::pack_groups_avx512(rgba, count, out);
+#endif
+    const srgb::Tables& t = srgb::tables();
+    for (int g = 0; g < count; ++g) quantize_pack_srgb8<Wide>(t, rgba[g], out[g]);
 }
 
 // A source color of eight lanes in 8-bit: what blending reads of it (its channels times its
