@@ -97,9 +97,13 @@ const std::array<float, 16> kOctaveScale = [] {
         // channel's work back until the previous one's chain is done.)
         if (undecided[0] | undecided[1] | undecided[2]) [[unlikely]]
             for (int i = 0; i < 3; ++i) k[i] = decide(t, c[i], k[i], undecided[i]);
-        const __m512i rgb = _mm512_or_si512(k[0], _mm512_or_si512(_mm512_maskz_slli_epi32(kAll, k[1], 8), _mm512_maskz_slli_epi32(kAll, k[2], 16)));
-        out[g] = simd::i8(low_half(rgb)) | (simd::quantize_unorm8(first[3]) << 24);  // (alpha is never encoded)
-        if (g + 1 < count) out[g + 1] = simd::i8(high_half(rgb)) | (simd::quantize_unorm8(second[3]) << 24);
+        // Alpha as quantize_unorm8: clamped (a NaN to 0), times 255, plus 1/2, truncated.
+        const __m512 a = __m512(join(first[3], second[3]));
+        const __m512 a01 = _mm512_maskz_min_ps(kAll, _mm512_maskz_max_ps(kAll, a, _mm512_setzero_ps()), _mm512_set1_ps(1.0f));
+        const __m512i qa = _mm512_maskz_cvttps_epi32(kAll, _mm512_add_ps(_mm512_mul_ps(a01, _mm512_set1_ps(255.0f)), _mm512_set1_ps(0.5f)));
+        const __m512i packed = _mm512_or_si512(_mm512_or_si512(k[0], _mm512_maskz_slli_epi32(kAll, k[1], 8)), _mm512_or_si512(_mm512_maskz_slli_epi32(kAll, k[2], 16), _mm512_maskz_slli_epi32(kAll, qa, 24)));
+        out[g] = simd::i8(low_half(packed));
+        if (g + 1 < count) out[g + 1] = simd::i8(high_half(packed));
     }
 }
 
