@@ -98,6 +98,7 @@ const std::array<float, 16> kOctaveScale = [] {
         if (undecided[0] | undecided[1] | undecided[2]) [[unlikely]]
             for (int i = 0; i < 3; ++i) k[i] = decide(t, c[i], k[i], undecided[i]);
         // Alpha as quantize_unorm8: clamped (a NaN to 0), times 255, plus 1/2, truncated.
+        // (Not a call of it: see simd_avx512.h on calling plain functions from these.)
         const __m512 a = __m512(join(first[3], second[3]));
         const __m512 a01 = _mm512_maskz_min_ps(kAll, _mm512_maskz_max_ps(kAll, a, _mm512_setzero_ps()), _mm512_set1_ps(1.0f));
         const __m512i qa = _mm512_maskz_cvttps_epi32(kAll, _mm512_add_ps(_mm512_mul_ps(a01, _mm512_set1_ps(255.0f)), _mm512_set1_ps(0.5f)));

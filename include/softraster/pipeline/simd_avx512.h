@@ -9,6 +9,11 @@
 #include <immintrin.h>
 
 // The AVX-512 copies' instructions (with AVX2's, which they call too).
+// A function compiled with these calls only functions compiled with them too (or takes
+// scalars and pointers): it passes a vector argument in a register, while a plain function
+// (compiled for any x86-64) expects it in memory (the psABI's rule for 32-byte vectors
+// without AVX). Inlined, as in Release, the two agree; called, as in the sanitizer build
+// (-O0, no flatten), the plain function reads garbage.
 #define SOFTRASTER_AVX512_TARGET_NAMES "avx2,fma,avx512f,avx512bw,avx512vl,avx512dq"
 
 namespace softraster::simd::avx512 {
