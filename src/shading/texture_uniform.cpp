@@ -83,6 +83,40 @@ template <int Bits>
     out1 = {i8(avx512::high_half(__m512i(index))), i8(avx512::high_half(__m512i(fx))), i8(avx512::high_half(__m512i(fy)))};
 }
 #endif
+#if SOFTRASTER_HAS_AVX2_PATH
+// The corridor's texel loads wait on memory most where a row of quads reaches texels no row
+// above it read: a screen row walks along its row of texel tiles, which the hardware's
+// prefetch of neighbouring lines follows, but each row below starts on tiles further along v.
+// So a call on two pairs of rows (sample_uniform_four) asks for the footprints kRowsAhead rows
+// below its second rows, at its first level: the rows a later call of the same tile reads,
+// some hundreds of cycles on. Their sample points are the second rows' shifted by kRowsAhead
+// times the derivatives across rows, in the same fixed point (the level's mask wraps them as
+// the lookup's own); a prefetch only asks, so an approximate point costs no more than a wasted
+// line. Measured in docs/performance.md ("Texels of the rows below, fetched ahead").
+inline constexpr float kRowsAhead = 3.0f;
+// A fixed-point coordinate f moved by scale times its derivative across rows. (Intrinsics:
+// their conversion and sum are defined for any derivative, the vector operators' are not for
+// one out of range. The vectors by reference, as the other AVX2 helpers here take them: see
+// simd_avx512.h on passing them by value across copies.)
+[[gnu::target("avx2")]] inline void rows_below(const i8& f, const f8& across_rows, float scale, i8& out) {
+    out = i8(_mm256_add_epi32(__m256i(f), _mm256_cvttps_epi32(__m256(across_rows * scale))));
+}
+template <Path P, int Bits, bool Srgb>
+inline void fetch_rows_below(const PotLevels& t, const i8& fu0, const i8& fv0, const f8* d0, const i8& fu1, const i8& fv1, const f8* d1, int level) {
+    constexpr float kScale = kRowsAhead * float(1 << Bits);
+    i8 u0, v0, u1, v1;
+    rows_below(fu0, d0[2], kScale * t.w, u0), rows_below(fv0, d0[3], kScale * t.h, v0);
+    rows_below(fu1, d1[2], kScale * t.w, u1), rows_below(fv1, d1[3], kScale * t.h, v1);
+    LevelPoint p[2];
+    if constexpr (P == Path::Avx512) level_points_avx512<Bits>(t, u0, u1, v0, v1, level, p[0], p[1]);
+    else level_point_avx2<Bits>(t, u0, v0, level, p[0]), level_point_avx2<Bits>(t, u1, v1, level, p[1]);
+    for (const LevelPoint& group : p)
+        for (int lane = 0; lane < simd::kLanes; ++lane) {
+            if constexpr (Srgb) __builtin_prefetch(t.fixed_texels + group.index[lane]);
+            else __builtin_prefetch(t.texels + group.index[lane]);
+        }
+}
+#endif
 // The CPU path's copy.
 template <bool Wide, int Bits>
 inline void level_point_on(const PotLevels& t, const i8& fu, const i8& fv, int k, LevelPoint& out) {
@@ -230,6 +264,9 @@ inline bool sample_uniform_fixed(const PotLevels& t, const f8* const (&u)[G], co
             for (int g = 0; g < G; ++g)
                 for (int k = 0; k < (guess.two ? 2 : 1); ++k) level_point_on<Wide, kBits>(t, fu[g], fv[g], guess.level + k, p[g][k]);
         load(guess.two ? 2 : 1);
+#if SOFTRASTER_HAS_AVX2_PATH
+        if constexpr (P != Path::Generic && G == 4 && D == 2) fetch_rows_below<P, kBits, Srgb>(t, fu[1], fv[1], d[0], fu[3], fv[3], d[1], guess.level);
+#endif
         int level[D];
         bool uniform = true;
         for (int k = 0; k < D; ++k) {
