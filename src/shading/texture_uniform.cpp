@@ -110,10 +110,16 @@ inline void fetch_rows_below(const PotLevels& t, const i8& fu0, const i8& fv0, c
     LevelPoint p[2];
     if constexpr (P == Path::Avx512) level_points_avx512<Bits>(t, u0, u1, v0, v1, level, p[0], p[1]);
     else level_point_avx2<Bits>(t, u0, v0, level, p[0]), level_point_avx2<Bits>(t, u1, v1, level, p[1]);
+    // (An sRGB texture's footprint, 8 bytes a texel, ends 56 bytes on, mostly in the next
+    // line: its last texel is asked for too. A linear one's 28 bytes mostly share one.)
     for (const LevelPoint& group : p)
         for (int lane = 0; lane < simd::kLanes; ++lane) {
-            if constexpr (Srgb) __builtin_prefetch(t.fixed_texels + group.index[lane]);
-            else __builtin_prefetch(t.texels + group.index[lane]);
+            if constexpr (Srgb) {
+                __builtin_prefetch(t.fixed_texels + group.index[lane]);
+                __builtin_prefetch(t.fixed_texels + group.index[lane] + Texture::kTileSide + 1);
+            } else {
+                __builtin_prefetch(t.texels + group.index[lane]);
+            }
         }
 }
 #endif
