@@ -89,7 +89,7 @@ template <int Bits>
 // prefetch of neighbouring lines follows, but each row below starts on tiles further along v.
 // So a call on two pairs of rows (sample_uniform_four) asks for the footprints kRowsAhead rows
 // below its second rows, at its first level: the rows a later call of the same tile reads,
-// some hundreds of cycles on. Their sample points are the second rows' shifted by kRowsAhead
+// after the rest of this row of quads. Their sample points are the second rows' shifted by kRowsAhead
 // times the derivatives across rows, in the same fixed point (the level's mask wraps them as
 // the lookup's own); a prefetch only asks, so an approximate point costs no more than a wasted
 // line. Measured in docs/performance.md ("Texels of the rows below, fetched ahead").
