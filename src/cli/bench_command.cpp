@@ -21,11 +21,65 @@ const char* cpu_path() {
     if (simd::cpu_has_avx512()) return "avx512";  // (the texture lookup's and the sRGB encode's; the rest AVX2)
     return simd::wide_path_runs() ? "avx2" : "generic";
 }
+
+// One frame as bench times it: every draw, and with MSAA the resolve (llvmpipe's timing
+// blits to a resolve buffer too; single-sampled, the framebuffer already is the picture),
+// and a supersampled scene's downsampling.
+RenderStats draw_frame(const Scene& scene, const SceneRenderer& renderer, Framebuffer& fb, Image& picture) {
+    const RenderStats stats = renderer.render(fb);
+    if (fb.samples() > 1) resolve(fb, picture, renderer.pool());
+    if (scene.supersample > 1) picture = downsample_box(fb.samples() > 1 ? picture : fb.read_pixels(), scene.supersample);
+    return stats;
+}
+double median_of(std::vector<double> ms) {
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+}
+
+// --scaling: the same frames on one thread and on `threads`, taking turns frame by frame, so
+// that a stretch of the machine's time that runs slow (a shared machine's neighbours) falls
+// on both alike; times taken seconds apart in two runs compare the machine's moments as much
+// as the thread counts (docs/performance.md, "The second thread, measured in one process").
+int run_scaling(const BenchOptions& opt, const Scene& scene, unsigned threads) {
+    const SceneRenderer renderers[2] = {SceneRenderer(scene, 1), SceneRenderer(scene, threads)};
+    Framebuffer fbs[2] = {renderers[0].make_framebuffer(), renderers[1].make_framebuffer()};
+    Image picture(scene.width, scene.height);
+    std::vector<double> ms[2];
+    for (int i = 0; i < 2 * (opt.warmup + opt.frames); ++i) {
+        const int k = i % 2;
+        const auto t0 = std::chrono::steady_clock::now();
+        draw_frame(scene, renderers[k], fbs[k], picture);
+        const auto t1 = std::chrono::steady_clock::now();
+        if (i >= 2 * opt.warmup) ms[k].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    }
+    const double one = median_of(ms[0]), many = median_of(ms[1]);
+    const double min_one = *std::min_element(ms[0].begin(), ms[0].end()), min_many = *std::min_element(ms[1].begin(), ms[1].end());
+    if (opt.json) {
+        std::printf("{\"renderer\": \"softraster\", \"scene\": \"%s\", \"threads\": %u, \"frames\": %d, \"median_ms\": %.3f, "
+                    "\"min_ms\": %.3f, \"one_thread_median_ms\": %.3f, \"one_thread_min_ms\": %.3f, \"speedup\": %.3f, \"cpu_path\": \"%s\"}\n",
+                    opt.scene.c_str(), threads, opt.frames, many, min_many, one, min_one, one / many, cpu_path());
+    } else {
+        std::printf("%s: %dx%d, %d sample(s), 1 and %u threads taking turns, %d frames each after %d warm-up, %s code\n", opt.scene.c_str(),
+                    scene.width, scene.height, scene.samples, threads, opt.frames, opt.warmup, cpu_path());
+        std::printf("  1 thread:   median %.2f ms   min %.2f ms\n", one, min_one);
+        std::printf("  %u threads: median %.2f ms   min %.2f ms\n", threads, many, min_many);
+        std::printf("  %.2fx as fast on %u threads (median frames)\n", one / many, threads);
+    }
+    return 0;
+}
 }  // namespace
 
 int run_bench(const BenchOptions& opt) {
     const Scene scene = load_scene(opt.scene);
     const unsigned threads = thread_count(opt.threads);
+    if (opt.scaling) {
+        if (threads < 2) {
+            std::fprintf(stderr, "softraster bench: --scaling compares 1 thread with more: give --threads 2 or more (this machine has %u core(s))\n",
+                         std::max(1u, std::thread::hardware_concurrency()));
+            return 2;
+        }
+        return run_scaling(opt, scene, threads);
+    }
     std::optional<SceneRenderer> still;  // without --orbit one renderer draws every frame
     if (!opt.orbit) still.emplace(scene, threads);
     std::optional<Framebuffer> fb;  // made by the first frame's renderer, drawn into by all
@@ -42,11 +96,7 @@ int run_bench(const BenchOptions& opt) {
         if (opt.orbit) turned.emplace(turned_copy.emplace(turned_scene(scene, 360.0 * std::max(0, i - opt.warmup) / opt.frames)), threads);
         const SceneRenderer& renderer = opt.orbit ? *turned : *still;
         if (!fb) fb.emplace(renderer.make_framebuffer());
-        stats = renderer.render(*fb);
-        // With MSAA the resolve is part of every frame (llvmpipe's timing blits to a
-        // resolve buffer too); single-sampled, the framebuffer already is the picture.
-        if (fb->samples() > 1) resolve(*fb, picture, renderer.pool());
-        if (scene.supersample > 1) picture = downsample_box(fb->samples() > 1 ? picture : fb->read_pixels(), scene.supersample);
+        stats = draw_frame(scene, renderer, *fb, picture);
         timed_end = std::chrono::steady_clock::now();
         if (i >= opt.warmup) ms.push_back(std::chrono::duration<double, std::milli>(timed_end - t0).count());
         // A statistic, counted once, outside the frames' time (a walk over every draw's mesh).

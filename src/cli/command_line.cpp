@@ -132,9 +132,13 @@ Run add_bench(CLI::App& app) {
     cmd->add_option("--warmup", opt->warmup, "Untimed frames first")->check(CLI::Range(0, 100000))->capture_default_str();
     add_threads_option(*cmd, opt->threads);
     cmd->add_flag("--json", opt->json, "Print one JSON line instead of text");
-    cmd->add_flag("--orbit", opt->orbit,
-                  "Turn the objects once around in the timed frames (the turntable of 'animate'), each frame set up anew as "
-                  "'view' and 'animate' do, and report frames per second");
+    CLI::Option* orbit = cmd->add_flag("--orbit", opt->orbit,
+                                       "Turn the objects once around in the timed frames (the turntable of 'animate'), each frame set up "
+                                       "anew as 'view' and 'animate' do, and report frames per second");
+    cmd->add_flag("--scaling", opt->scaling,
+                  "Draw the frames on 1 thread and on --threads in turn, frame by frame, and report how much faster the second are "
+                  "(a slow spell of a shared machine then falls on both)")
+        ->excludes(orbit);
     return [opt] { return run_bench(*opt); };
 }
 

@@ -28,7 +28,7 @@ int run_showcase(const ShowcaseOptions& opt);
 struct BenchOptions {
     std::string scene;
     int frames = 20, warmup = 3, threads = 0;
-    bool json = false, orbit = false;
+    bool json = false, orbit = false, scaling = false;
 };
 int run_bench(const BenchOptions& opt);
 

@@ -117,6 +117,21 @@ except ValueError:
 if not (b.get('frames') == 3 and b.get('threads') == 2 and b.get('triangles') == 288 and b.get('fragments_shaded', 0) > 0
         and 0 < b.get('min_ms', 0) <= b.get('median_ms', 0) <= b.get('max_ms', 0)):
     failures.append('bench --json should report 3 frames of 288 triangles: %d %r %s' % (r.returncode, b, r.stderr))
+# --scaling: both thread counts' frames, and how much faster the second; refused for one
+# thread (nothing to compare) and beside --orbit.
+r = run([exe, 'bench', spheres, '--scaling', '--frames', '3', '--warmup', '1', '--threads', '2', '--json'])
+try:
+    b = json.loads(r.stdout) if r.returncode == 0 else {}
+except ValueError:
+    b = {}
+if not (b.get('frames') == 3 and b.get('threads') == 2 and 0 < b.get('min_ms', 0) <= b.get('median_ms', 0)
+        and 0 < b.get('one_thread_min_ms', 0) <= b.get('one_thread_median_ms', 0)
+        and abs(b.get('speedup', 0) - b['one_thread_median_ms'] / b['median_ms']) < 0.01):
+    failures.append('bench --scaling --json should report both thread counts and the speedup: %d %r %s' % (r.returncode, b, r.stderr))
+for args in (['--threads', '1'], ['--orbit', '--threads', '2']):
+    r = run([exe, 'bench', spheres, '--scaling', '--frames', '1'] + args)
+    if r.returncode != 2 or len(r.stderr.strip().split('\n')) != 1 or r.stdout:
+        failures.append('bench --scaling %s should be refused (exit 2, one line): %d %r' % (' '.join(args), r.returncode, r.stderr))
 # ... and the CPU copies it ran on: the generic one when forced, never AVX-512 when that is off.
 for env, allowed in (({}, ('avx512', 'avx2', 'generic')), ({'SOFTRASTER_GENERIC': '1'}, ('generic',)),
                      ({'SOFTRASTER_NO_AVX512': '1'}, ('avx2', 'generic'))):
