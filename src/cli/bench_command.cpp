@@ -64,6 +64,9 @@ int run_scaling(const BenchOptions& opt, const Scene& scene, unsigned threads) {
         std::printf("  1 thread:   median %.2f ms   min %.2f ms\n", one, min_one);
         std::printf("  %u threads: median %.2f ms   min %.2f ms\n", threads, many, min_many);
         std::printf("  %.2fx as fast on %u threads (median frames)\n", one / many, threads);
+        // (More than the thread count: the cores did not run at one speed, say a virtual
+        // machine's core slowed by its host, which taking turns does not even out.)
+        if (one / many > 1.05 * threads) std::printf("  (more than %u times: the cores ran at different speeds meanwhile; run it again)\n", threads);
     }
     return 0;
 }
