@@ -1,55 +1,110 @@
 #include "softraster/context.h"
 
+#include <algorithm>
+
 namespace softraster {
 namespace {
 
-// Runs fn(i, thread) for i in [0, count) on the pool, or inline without one.
+// Runs fn(i, thread) for i in [0, count) on the pool (thread t starting on its share, if
+// `shares` are given: WorkerPool::parallel_for), or inline without one.
 template <class F>
-void for_each_item(WorkerPool* pool, size_t count, F&& fn) {
+void for_each_item(WorkerPool* pool, size_t count, F&& fn, std::span<const uint32_t> shares = {}) {
     if (pool) {
-        pool->parallel_for(count, fn);
+        pool->parallel_for(count, fn, shares);
     } else {
         for (size_t i = 0; i < count; ++i) fn(i, 0u);
     }
 }
 
-// The (command, chunk) pairs of one phase, across all commands, so that small draws share
-// the threads instead of each taking a turn.
-template <class Count>
-std::vector<std::pair<Command*, size_t>> work_items(std::span<const std::unique_ptr<Command>> commands, Count count) {
-    std::vector<std::pair<Command*, size_t>> items;
-    for (const auto& c : commands)
-        for (size_t i = 0, n = count(*c); i < n; ++i) items.push_back({c.get(), i});
-    return items;
+// Stably sorts `items` by the key thread_of(item) < threads (a counting sort), and writes
+// where each key's run begins to `shares` (threads + 1 bounds).
+template <class T, class Key>
+void group_by_thread(std::vector<T>& items, unsigned threads, Key&& thread_of, std::vector<uint32_t>& shares) {
+    shares.assign(threads + 1, 0);
+    for (const T& item : items) ++shares[thread_of(item) + 1];
+    for (unsigned t = 1; t <= threads; ++t) shares[t] += shares[t - 1];
+    std::vector<T> sorted(items.size());
+    std::vector<uint32_t> cursor(shares.begin(), shares.end() - 1);
+    for (const T& item : items) sorted[cursor[thread_of(item)]++] = item;
+    items.swap(sorted);
 }
 
 }  // namespace
 
+Context::Footprint Context::footprint_of(const Command& c, const TileGrid& grid, unsigned thread) {
+    Footprint f;
+    f.thread = uint16_t(thread);
+    if (!c.binned()) {
+        f.kind = Footprint::Kind::EveryTile;
+        return f;
+    }
+    if (c.tiles().count() > 64) return f;  // (Kind::AskCommand)
+    f.kind = Footprint::Kind::Tiles;
+    f.range = c.tiles();
+    for (int ty = f.range.y0, k = 0; ty < f.range.y1; ++ty)
+        for (int tx = f.range.x0; tx < f.range.x1; ++tx, ++k)
+            if (c.triangles_in_tile(grid.tile_index(tx, ty)) > 0) f.tiles |= uint64_t(1) << k;
+    return f;
+}
+
 void Context::list_commands_by_tile(Commands batch, const TileGrid& grid) {
     // A counting sort of (tile, command) pairs by tile, commands in draw order: a binned
-    // command in the tiles where it has triangles, any other in every tile.
+    // command in the tiles where it has triangles, any other in every tile. A small draw's
+    // tiles come from its footprint, the others' from the command itself.
     const auto tiles = size_t(grid.count());
-    auto for_each_tile = [&](const Command& c, auto&& f) {
-        if (!c.binned()) {
+    auto for_each_tile = [&](size_t i, auto&& f) {
+        const Footprint& fp = footprints_[i];
+        const Command& c = *batch[i];
+        const bool ask = fp.kind == Footprint::Kind::AskCommand;
+        if (fp.kind == Footprint::Kind::EveryTile || (ask && !c.binned())) {
             for (size_t t = 0; t < tiles; ++t) f(t);
             return;
         }
-        const TileRange& r = c.tiles();
-        for (int ty = r.y0; ty < r.y1; ++ty)
-            for (int tx = r.x0; tx < r.x1; ++tx) {
+        const TileRange& r = ask ? c.tiles() : fp.range;
+        for (int ty = r.y0, k = 0; ty < r.y1; ++ty)
+            for (int tx = r.x0; tx < r.x1; ++tx, ++k) {
                 const int t = grid.tile_index(tx, ty);
-                if (c.triangles_in_tile(t) > 0) f(size_t(t));
+                if (ask ? c.triangles_in_tile(t) > 0 : (fp.tiles >> k & 1) != 0) f(size_t(t));
             }
     };
     tile_first_.assign(tiles + 1, 0);
-    for (const auto& c : batch) for_each_tile(*c, [&](size_t t) { ++tile_first_[t + 1]; });
+    for (size_t i = 0; i < batch.size(); ++i) for_each_tile(i, [&](size_t t) { ++tile_first_[t + 1]; });
     for (size_t t = 1; t <= tiles; ++t) tile_first_[t] += tile_first_[t - 1];
     tile_commands_.resize(tile_first_[tiles]);
     std::vector<uint32_t> cursor(tile_first_.begin(), tile_first_.end() - 1);
-    for (const auto& c : batch) for_each_tile(*c, [&](size_t t) { tile_commands_[cursor[t]++] = c.get(); });
+    for (size_t i = 0; i < batch.size(); ++i) for_each_tile(i, [&](size_t t) { tile_commands_[cursor[t]++] = batch[i].get(); });
     busy_tiles_.clear();
     for (size_t t = 0; t < tiles; ++t)
         if (tile_first_[t + 1] > tile_first_[t]) busy_tiles_.push_back(uint32_t(t));
+}
+
+void Context::split_tiles(size_t first, const TileGrid& grid) {
+    // The busy tiles (in row order) in runs of about equal (tile, draw) pairs, one run per
+    // thread: bands of the screen, as alike from one execution to the next as the scene.
+    const unsigned threads = pool_->size();
+    const size_t pairs = tile_commands_.size();
+    tile_shares_.assign(threads + 1, uint32_t(busy_tiles_.size()));
+    tile_shares_[0] = 0;
+    tile_thread_.resize(size_t(grid.count()));
+    size_t seen = 0;
+    for (unsigned k = 0, t = 0; k < busy_tiles_.size(); ++k) {
+        const uint32_t tile = busy_tiles_[k];
+        tile_thread_[tile] = uint16_t(t);
+        seen += tile_first_[tile + 1] - tile_first_[tile];
+        while (t + 1 < threads && seen * threads >= pairs * (t + 1)) tile_shares_[++t] = k + 1;
+    }
+    // Next time, each small draw's front end runs on the thread of most of its tiles (ties
+    // to the first), whose core then reads what it wrote.
+    std::vector<uint32_t> mine(threads);
+    for (size_t i = 0; i < footprints_.size(); ++i) {
+        const Footprint& fp = footprints_[i];
+        if (fp.kind != Footprint::Kind::Tiles || fp.tiles == 0) continue;
+        std::fill(mine.begin(), mine.end(), 0);
+        for (int ty = fp.range.y0, k = 0; ty < fp.range.y1; ++ty)
+            for (int tx = fp.range.x0; tx < fp.range.x1; ++tx, ++k)
+                if (fp.tiles >> k & 1) ++mine[tile_thread_[size_t(grid.tile_index(tx, ty))]];
+        recorded_[first + i].thread = uint16_t(std::max_element(mine.begin(), mine.end()) - mine.begin());
+    }
 }
 
 void Context::execute() {
@@ -58,8 +113,8 @@ void Context::execute() {
     target.grid = TileGrid(fb_->width(), fb_->height());
     target.planes = ClipPlanes::for_viewport(fb_->width(), fb_->height());
     target.viewport = {fb_->width(), fb_->height()};
-    for (auto& c : commands_)
-        if (c->uses_stencil()) fb_->add_stencil();
+    for (const Recorded& r : recorded_)
+        if (r.uses_stencil) fb_->add_stencil();
     // The commands in batches (Context::batching), each through every phase before the next:
     // a tile's commands run in draw order within a batch, and the batches in order.
     fragments_shaded_ = 0;
@@ -67,48 +122,93 @@ void Context::execute() {
     for (size_t begin = 0, end; begin < commands_.size(); begin = end) {
         size_t bytes = 0;
         for (end = begin; end < commands_.size();) {
-            bytes += commands_[end++]->post_transform_bytes();
+            bytes += recorded_[end++].post_transform_bytes;
             if (end - begin >= batching.draws && bytes >= batching.bytes) break;
         }
-        execute_batch(Commands(commands_).subspan(begin, end - begin), target);
+        execute_batch(begin, end - begin, target);
         ++batches_;
     }
 }
 
-void Context::execute_batch(Commands batch, const DrawTarget& target) {
-    // The batch's post-transform vertices in one block of memory, the same block batch after
-    // batch: the vertices the front end writes land on cache lines the tiles have just read.
-    auto footprint = [](const Command& c) { return (c.post_transform_bytes() + 63) & ~size_t(63); };  // (64-byte aligned)
-    size_t bytes = 0;
-    for (auto& c : batch) bytes += footprint(*c);
-    if (bytes > post_transform_size_) {
-        post_transform_.reset(static_cast<std::byte*>(::operator new(bytes, std::align_val_t(64))));
-        post_transform_size_ = bytes;
+void Context::place_post_transform(Commands batch, std::span<const Recorded> recorded, std::span<WorkItem> items, unsigned threads) {
+    // Each thread's small draws' post-transform vertices in a block of the thread's, one after
+    // another in the order it takes them, the same block batch after batch: a core writes
+    // over lines it wrote itself (and mostly read back itself, Context::split_tiles). A big
+    // draw's, whose chunks every thread writes, go in the first block.
+    post_blocks_.resize(threads);
+    std::vector<size_t> bytes(threads, 0);
+    auto footprint = [&](size_t i) { return (recorded[i].post_transform_bytes + 63) & ~size_t(63); };  // (64-byte aligned)
+    auto block_of = [&](const WorkItem& item) { return item.small ? item.thread : 0u; };
+    for (const WorkItem& item : items)
+        if (item.chunk == 0) bytes[block_of(item)] += footprint(item.command);
+    for (unsigned t = 0; t < threads; ++t) {
+        PostBlock& b = post_blocks_[t];
+        if (bytes[t] > b.size) b = {std::unique_ptr<std::byte[], AlignedDelete>(static_cast<std::byte*>(::operator new(bytes[t], std::align_val_t(64)))), bytes[t]};
+        bytes[t] = 0;
     }
-    bytes = 0;
-    for (auto& c : batch) {
-        c->prepare(post_transform_.get() + bytes);
-        bytes += footprint(*c);
+    for (WorkItem& item : items) {
+        if (item.chunk != 0) continue;
+        const unsigned t = block_of(item);
+        item.post = post_blocks_[t].memory.get() + bytes[t];
+        bytes[t] += footprint(item.command);
+        if (!item.small) batch[item.command]->prepare(item.post);
     }
+}
 
-    // The front end. A small draw is one item (Command::process_small): with many small
-    // draws, processing all vertices first would have evicted them from the cache before
-    // binning. Bigger draws go in two phases, every chunk of a phase in parallel.
-    const auto vertex_items = work_items(batch, [&](const Command& c) { return c.small() ? size_t(1) : c.vertex_chunks(); });
-    for_each_item(pool_, vertex_items.size(), [&](size_t i, unsigned) {
-        Command& c = *vertex_items[i].first;
-        if (!c.small()) return c.process_vertex_chunk(vertex_items[i].second, target);
+void Context::execute_batch(size_t first, size_t size, const DrawTarget& target) {
+    const Commands batch = Commands(commands_).subspan(first, size);
+    const std::span<const Recorded> recorded = std::span<const Recorded>(recorded_).subspan(first, size);
+    // (Each entry is written by the thread that runs its draw's front end, or below for big
+    // draws: filled in here, on the calling thread, every line would then travel to the core
+    // that writes it.)
+    footprints_.resize(size);
+
+    // The front end. A small draw is one item, all of it on the thread that takes it: its
+    // memory placed (Command::prepare), its vertices processed and its primitives binned
+    // (Command::process_small: with many small draws, processing all vertices first would
+    // have evicted them from the cache before binning), its per-tile totals summed and its
+    // footprint written down. Bigger draws go in two phases, every chunk of a phase in
+    // parallel, placed before and summed after.
+    const unsigned threads = pool_ ? pool_->size() : 1;
+    std::vector<WorkItem> vertex_items, bin_items;
+    size_t big_chunks = 0;
+    for (size_t i = 0; i < size; ++i) {
+        if (recorded[i].small) {
+            // The thread it went to last time, or at first one of equal runs in draw order.
+            const uint16_t thread = recorded[i].thread < threads ? recorded[i].thread : uint16_t(i * threads / size);
+            vertex_items.push_back({nullptr, uint32_t(i), 0, thread, true});
+            continue;
+        }
+        Command& c = *batch[i];
+        for (size_t k = 0, n = c.vertex_chunks(); k < n; ++k) vertex_items.push_back({nullptr, uint32_t(i), uint32_t(k), 0, false}), ++big_chunks;
+        for (size_t k = 0, n = c.primitive_chunks(); k < n; ++k) bin_items.push_back({nullptr, uint32_t(i), uint32_t(k), 0, false});
+    }
+    // A big draw's chunks in equal runs over the threads.
+    for (size_t k = 0, n = 0; k < vertex_items.size(); ++k)
+        if (!vertex_items[k].small) vertex_items[k].thread = uint16_t(n++ * threads / big_chunks);
+    group_by_thread(vertex_items, threads, [](const WorkItem& item) { return item.thread; }, item_shares_);
+    place_post_transform(batch, recorded, vertex_items, threads);
+    for_each_item(pool_, vertex_items.size(), [&](size_t k, unsigned thread) {
+        const WorkItem& item = vertex_items[k];
+        Command& c = *batch[item.command];
+        if (!item.small) return c.process_vertex_chunk(item.chunk, target);
+        c.prepare(item.post);
         c.process_small(target);
-    });
-    const auto bin_items = work_items(batch, [&](const Command& c) { return c.small() ? size_t(0) : c.primitive_chunks(); });
-    for_each_item(pool_, bin_items.size(), [&](size_t i, unsigned) { bin_items[i].first->bin_primitive_chunk(bin_items[i].second, target); });
-    for (auto& c : batch) c->finish_binning(target.grid);
+        c.finish_binning(target.grid);
+        footprints_[item.command] = footprint_of(c, target.grid, thread);
+    }, item_shares_);
+    for_each_item(pool_, bin_items.size(), [&](size_t k, unsigned) { batch[bin_items[k].command]->bin_primitive_chunk(bin_items[k].chunk, target); });
+    for (size_t i = 0; i < size; ++i)
+        if (!recorded[i].small) {
+            batch[i]->finish_binning(target.grid);
+            footprints_[i] = Footprint{};  // (Kind::AskCommand)
+        }
     list_commands_by_tile(batch, target.grid);
+    if (threads > 1) split_tiles(first, target.grid);
 
     // The back end: one thread per tile at a time, the tile's commands in draw order, so the
     // framebuffer needs no locks. Runs of opaque draws with heavy overdraw are drawn in two
     // passes (hidden_surface_removal.h); everything else one command after another.
-    const unsigned threads = pool_ ? pool_->size() : 1;
     const size_t tile_samples = size_t(kTileSize) * kTileSize * size_t(fb_->samples());
     // Each thread's count on a cache line of its own: counts side by side would bounce their
     // line between the cores at every draw of every tile.
@@ -136,7 +236,7 @@ void Context::execute_batch(Commands batch, const DrawTarget& target) {
             for (size_t k = c; k < end; ++k) count += draws[k]->shading_pass(int(tile), rect, target, uint32_t(k - c), owners);
             c = end;
         }
-    });
+    }, tile_shares_);
     for (const Count& s : shaded) fragments_shaded_ += s.n;
 }
 

@@ -112,7 +112,10 @@ void WorkerPool::worker_main(unsigned thread) {
     }
 }
 
-void WorkerPool::parallel_for(size_t count, const std::function<void(size_t, unsigned)>& fn) {
+void WorkerPool::parallel_for(size_t count, const std::function<void(size_t, unsigned)>& fn, std::span<const uint32_t> shares) {
+    const uint64_t n = size();
+    if (!shares.empty() && (shares.size() != n + 1 || shares[0] != 0 || shares[n] != count || !std::is_sorted(shares.begin(), shares.end())))
+        throw std::invalid_argument("WorkerPool::parallel_for: shares are not size() + 1 bounds from 0 to count");
     if (count == 0) return;
     if (workers_.empty() || count == 1) {
         for (size_t i = 0; i < count; ++i) fn(i, 0);
@@ -120,8 +123,10 @@ void WorkerPool::parallel_for(size_t count, const std::function<void(size_t, uns
     }
     if (count > std::numeric_limits<uint32_t>::max()) throw std::length_error("WorkerPool::parallel_for: 2^32 items or more");
     job_ = &fn;
-    const uint64_t n = size();
-    for (uint64_t t = 0; t < n; ++t) shares_[t].run.store(pack(count * t / n, count * (t + 1) / n), std::memory_order_relaxed);
+    for (uint64_t t = 0; t < n; ++t) {
+        const uint64_t begin = shares.empty() ? count * t / n : shares[t], end = shares.empty() ? count * (t + 1) / n : shares[t + 1];
+        shares_[t].run.store(pack(begin, end), std::memory_order_relaxed);
+    }
     open_.store(true);  // (a worker that sees the loop open sees its shares)
     {
         std::lock_guard lock(mutex_);  // (a worker going to sleep sees the new generation or is woken)

@@ -16,9 +16,11 @@
 // the number of threads, nor on the batches.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <new>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "softraster/framebuffer.h"
@@ -59,10 +61,10 @@ public:
 
     // Clears color, depth and (if the framebuffer has one) stencil.
     void clear(const glm::vec4& color, float depth = 1.0f, uint8_t stencil = 0) {
-        commands_.push_back(std::make_unique<ClearCommand>(color, depth, stencil));
+        add(std::make_unique<ClearCommand>(color, depth, stencil));
     }
     // Clears depth only: color and stencil keep what they hold.
-    void clear_depth(float depth = 1.0f) { commands_.push_back(std::make_unique<ClearCommand>(depth)); }
+    void clear_depth(float depth = 1.0f) { add(std::make_unique<ClearCommand>(depth)); }
 
     // Records a draw of `indices` (three per triangle, two per line, one per point).
     // Throws std::out_of_range for an index past the end of `vertices`.
@@ -89,6 +91,7 @@ public:
     void finish() {
         execute();
         commands_.clear();
+        recorded_.clear();
     }
     // finish(), then the resolved picture.
     Image read_pixels() {
@@ -107,36 +110,85 @@ private:
     void record(const S& shader, std::span<const typename S::Vertex> vertices, std::span<const uint32_t> indices) {
         validate_indices(indices, vertices.size(), T);
         if (needs_general_back_end(state, fb_->samples(), fb_->srgb())) {
-            commands_.push_back(
-                std::make_unique<GeneralTriangleCommand<S, T>>(shader, state, fb_->samples(), fb_->color_space(), vertices, indices));
+            add(std::make_unique<GeneralTriangleCommand<S, T>>(shader, state, fb_->samples(), fb_->color_space(), vertices, indices));
             return;
         }
         dispatch_samples(fb_->samples(), [&]<int Samples>() {
-            commands_.push_back(std::make_unique<TriangleCommand<S, Samples, T>>(shader, state, vertices, indices));
+            add(std::make_unique<TriangleCommand<S, Samples, T>>(shader, state, vertices, indices));
         });
     }
+    // What execute() asks of a command outside its phases, read off it once when it is
+    // recorded: the batch's sequential parts then read this array, not the command objects
+    // the front end's threads write (whose cache lines would travel from core to core).
+    // With more than one thread, each batch's busy tiles are cut into one band of the screen
+    // per thread (split_tiles), and a small draw's front end runs, execution after
+    // execution, on the thread whose band held most of its tiles the time before
+    // (`thread`): what a draw's front end writes is then mostly read back by the same core.
+    // (A cache line that moves between the cores takes some 200 ns on the machine we measure
+    // on: docs/performance.md.)
+    static constexpr uint16_t kAnyThread = 0xffff;
+    struct Recorded {
+        size_t post_transform_bytes;
+        bool small;
+        bool uses_stencil;
+        uint16_t thread;  // the small draw's front end, or kAnyThread
+    };
+    void add(std::unique_ptr<Command> command) {
+        recorded_.push_back({command->post_transform_bytes(), command->small(), command->uses_stencil(), kAnyThread});
+        commands_.push_back(std::move(command));
+    }
+    // Where a small draw's triangles are, as the thread that binned it wrote it down
+    // (Context::execute_batch): the tiles of `range` whose bits `tiles` sets.
+    struct Footprint {
+        enum class Kind : uint8_t { EveryTile, Tiles, AskCommand } kind = Kind::AskCommand;
+        uint16_t thread = 0;  // the thread that binned it
+        TileRange range;
+        uint64_t tiles = 0;  // bit k: local tile k of range
+    };
+    static Footprint footprint_of(const Command& c, const TileGrid& grid, unsigned thread);
     using Commands = std::span<const std::unique_ptr<Command>>;
-    void execute_batch(Commands batch, const DrawTarget& target);
+    void execute_batch(size_t first, size_t size, const DrawTarget& target);  // commands [first, first + size)
     void list_commands_by_tile(Commands batch, const TileGrid& grid);
+    void split_tiles(size_t first, const TileGrid& grid);
+    // An item of a front-end phase: a small draw, or a chunk of a bigger one. It carries all
+    // the thread that takes it reads of the batch's lists, written on the calling thread.
+    struct WorkItem {
+        std::byte* post;   // a small draw's post-transform vertices (place_post_transform)
+        uint32_t command;  // its index in the batch
+        uint32_t chunk;
+        uint16_t thread;  // whose share it goes to
+        bool small;
+    };
+    void place_post_transform(Commands batch, std::span<const Recorded> recorded, std::span<WorkItem> items, unsigned threads);
 
     Framebuffer* fb_;
     WorkerPool* pool_;
     std::vector<uint32_t> owners_;  // per thread: the owner of each sample of its tile
     std::vector<std::unique_ptr<Command>> commands_;
+    std::vector<Recorded> recorded_;  // per command
     // Each tile's commands of the batch in draw order: tile t's are tile_commands_[tile_first_[t]
     // .. tile_first_[t + 1]). Built after binning, so a tile visits only the draws that touch
     // it; busy_tiles_ lists the tiles that have any, the back end's work items.
     std::vector<uint32_t> tile_first_;
     std::vector<Command*> tile_commands_;
     std::vector<uint32_t> busy_tiles_;
+    std::vector<Footprint> footprints_;   // per command of the batch
+    // Where each thread's share of the front end's items and of the busy tiles begins
+    // (WorkerPool::parallel_for), one past the last thread's the end.
+    std::vector<uint32_t> item_shares_, tile_shares_;
+    std::vector<uint16_t> tile_thread_;  // per tile of the grid: whose share it is in
     uint64_t fragments_shaded_ = 0;
     size_t batches_ = 0;
-    // The batch's post-transform vertices (Command::prepare): as big as the biggest batch's.
+    // The batch's post-transform vertices (Command::prepare), a block per thread
+    // (place_post_transform), each as big as the most it has held.
     struct AlignedDelete {
         void operator()(std::byte* p) const { ::operator delete(p, std::align_val_t(64)); }
     };
-    std::unique_ptr<std::byte[], AlignedDelete> post_transform_;
-    size_t post_transform_size_ = 0;
+    struct PostBlock {
+        std::unique_ptr<std::byte[], AlignedDelete> memory;
+        size_t size = 0;
+    };
+    std::vector<PostBlock> post_blocks_;
 };
 
 }  // namespace softraster

@@ -19,6 +19,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -35,8 +36,10 @@ public:
     unsigned size() const { return unsigned(workers_.size()) + 1; }
 
     // Calls fn(index, thread) for every index in [0, count), thread in [0, size()); returns
-    // when all are done. count is below 2^32. Not reentrant.
-    void parallel_for(size_t count, const std::function<void(size_t, unsigned)>& fn);
+    // when all are done. count is below 2^32. Not reentrant. Thread t starts on indices
+    // [shares[t], shares[t + 1]) when `shares` is given (size() + 1 bounds, from 0 to count,
+    // not decreasing), else on an equal run.
+    void parallel_for(size_t count, const std::function<void(size_t, unsigned)>& fn, std::span<const uint32_t> shares = {});
 
 private:
     void worker_main(unsigned thread);

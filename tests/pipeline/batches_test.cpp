@@ -2,6 +2,7 @@
 // pipeline a batch at a time, and the picture is the same however they are split.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <random>
 
 #include "test_support.h"
@@ -99,4 +100,62 @@ TEST(Batches, CloseAtTheirDrawsAndBytes) {
     ctx.batching.bytes = 0;  // the draws alone
     ctx.execute();
     EXPECT_EQ(ctx.batches(), 60u);
+}
+
+// With more than one thread, each batch's tiles go to the threads in bands and a small
+// draw's front end, from the second execution on, to the thread of its band
+// (Context::split_tiles). The picture is the same on any number of threads, execution after
+// execution: scattered small draws, a small draw over more tiles than a footprint holds
+// (64), a draw too big to be small (two chunks of vertices), and a clear, in batches of
+// several sizes.
+TEST(Batches, SamePictureOnAnyThreadsExecutionAfterExecution) {
+    constexpr int kW = 700, kH = 450;  // 11 x 8 tiles
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0, 1);
+    std::vector<RgbMesh> meshes;
+    auto quad = [&](float x0, float y0, float x1, float y1, float z) {
+        RgbMesh m;
+        const glm::vec3 color(u(rng), u(rng), u(rng));
+        for (glm::vec2 p : {glm::vec2(x0, y0), glm::vec2(x1, y0), glm::vec2(x1, y1), glm::vec2(x0, y1)})
+            m.vertices.push_back({window_to_clip(p.x, p.y, kW, kH, z), color});
+        m.indices = {0, 1, 2, 0, 2, 3};
+        return m;
+    };
+    meshes.push_back(quad(-20, -20, kW + 20, kH + 20, 0.9f));  // every tile: its footprint asks the command
+    for (int d = 0; d < 300; ++d) {
+        const float x = u(rng) * kW, y = u(rng) * kH, s = 4 + u(rng) * 120;
+        meshes.push_back(quad(x, y, x + s, y + s * (0.5f + u(rng)), u(rng) * 0.8f));
+    }
+    RgbMesh big;  // 17,400 vertices: more than a chunk of vertex processing
+    for (int k = 0; k < 5800; ++k) {
+        const float x = u(rng) * kW, y = u(rng) * kH, z = u(rng) * 0.8f;
+        for (int c = 0; c < 3; ++c) big.vertices.push_back({window_to_clip(x + 6 * u(rng), y + 6 * u(rng), kW, kH, z), glm::vec3(u(rng), 0.5f, 0.5f)});
+        for (uint32_t c = 0; c < 3; ++c) big.indices.push_back(uint32_t(3 * k) + c);
+    }
+    ASSERT_GT(big.vertices.size(), kVertexChunk);
+    meshes.insert(meshes.begin() + 150, big);
+
+    auto picture = [&](unsigned threads, Context::Batching batching, int executions) {
+        Framebuffer fb(kW, kH);
+        std::optional<WorkerPool> pool;
+        if (threads > 0) pool.emplace(threads);
+        Context ctx(fb, pool ? &*pool : nullptr);
+        ctx.batching = batching;
+        ctx.clear(glm::vec4(0.1f, 0.2f, 0.3f, 1.0f));
+        for (const RgbMesh& m : meshes)
+            ctx.draw(Topology::Triangles, RgbShader<true>{}, std::span<const RgbVertex>(m.vertices), std::span<const uint32_t>(m.indices));
+        std::vector<std::vector<Rgba8>> colors;
+        for (int e = 0; e < executions; ++e) {
+            ctx.execute();
+            colors.emplace_back(fb.color_data(), fb.color_data() + size_t(kW) * kH);
+        }
+        return colors;
+    };
+    const std::vector<Rgba8> expected = picture(0, {}, 1)[0];
+    for (Context::Batching batching : {Context::Batching{}, Context::Batching{0, 40}, Context::Batching{0, 7}})
+        for (unsigned threads : {2u, 3u}) {
+            const auto colors = picture(threads, batching, 3);
+            for (size_t e = 0; e < colors.size(); ++e)
+                EXPECT_TRUE(colors[e] == expected) << threads << " threads, batches of " << batching.draws << " draws, execution " << e + 1;
+        }
 }

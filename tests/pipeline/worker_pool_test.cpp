@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -89,4 +90,36 @@ TEST(WorkerPool, EachThreadRunsItsOwnShareFromTheFront) {
             }
         }
     }
+}
+
+// Given shares, thread t starts on [shares[t], shares[t + 1]) instead of an equal run, the
+// same way: its own items from the front, in order, others only from the back. Shares that
+// are not size() + 1 bounds from 0 to the count are refused.
+TEST(WorkerPool, GivenSharesEachThreadStartsOnItsOwn) {
+    WorkerPool pool(2);
+    constexpr size_t kCount = 40;
+    const std::vector<uint32_t> shares = {0, 30, 40};  // the caller 30, the worker 10
+    std::vector<std::vector<size_t>> order(2);
+    for (int loop = 0; loop < 3; ++loop) {
+        for (auto& o : order) o.clear();
+        pool.parallel_for(kCount, [&](size_t i, unsigned thread) {
+            order[thread].push_back(i);
+            std::this_thread::sleep_for(std::chrono::microseconds(300));
+        }, shares);
+        for (unsigned t = 0; t < 2; ++t) {
+            size_t next = shares[t];
+            for (size_t i : order[t])
+                if (i >= shares[t] && i < shares[t + 1]) EXPECT_EQ(i, next++) << "thread " << t;
+            for (size_t i : order[1 - t])
+                if (i >= shares[t] && i < shares[t + 1]) EXPECT_GE(i, next) << "thread " << 1 - t << " stole from the front of " << t;
+        }
+        EXPECT_EQ(order[0].size() + order[1].size(), kCount);
+        ASSERT_FALSE(order[0].empty());
+        EXPECT_EQ(order[0].front(), 0u);
+        if (!order[1].empty()) EXPECT_EQ(order[1].front(), 30u);  // (the caller reaches 30 only after 9 ms)
+    }
+    auto nothing = [](size_t, unsigned) {};
+    for (const std::vector<uint32_t>& bad : {std::vector<uint32_t>{0, 40}, std::vector<uint32_t>{0, 20, 39}, std::vector<uint32_t>{1, 20, 40},
+                                             std::vector<uint32_t>{0, 30, 20, 40}, std::vector<uint32_t>{0, 30, 20}})
+        EXPECT_THROW(pool.parallel_for(kCount, nothing, bad), std::invalid_argument);
 }
