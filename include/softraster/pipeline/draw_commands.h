@@ -45,8 +45,8 @@ public:
     // Bytes of post-transform vertices its front end writes for its back end to read.
     virtual size_t post_transform_bytes() const { return 0; }
     // Places those vertices at `memory` (post_transform_bytes() of it, 64-byte aligned: the
-    // context's, reused batch after batch) and sizes the command's other buffers
-    // (sequentially, before the parallel phases).
+    // context's, reused batch after batch) and sizes the command's other buffers: before
+    // the parallel phases, or for a small draw first thing on the thread that takes it.
     virtual void prepare(std::byte* /*memory*/) {}
     virtual size_t vertex_chunks() const { return 0; }
     virtual void process_vertex_chunk(size_t, const DrawTarget&) {}
@@ -57,7 +57,8 @@ public:
     // processed, while they are still in this core's cache.
     bool small() const { return vertex_chunks() <= 1 && primitive_chunks() <= 1; }
     virtual void process_small(const DrawTarget&) {}
-    // After all chunks are binned (sequentially): the per-tile totals below.
+    // After all its chunks are binned (a small draw's right after process_small, on the
+    // same thread): the per-tile totals below.
     virtual void finish_binning(const TileGrid&) {}
     // Draws this command's part of one tile; returns the fragments shaded.
     virtual uint64_t draw_tile(int tile, const Rect& rect, const DrawTarget&) = 0;
