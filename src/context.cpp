@@ -29,6 +29,14 @@ void group_by_thread(std::vector<T>& items, unsigned threads, Key&& thread_of, s
     items.swap(sorted);
 }
 
+// Calls f(tile) for each tile a footprint (Context::Footprint of Kind::Tiles) marks.
+template <class Footprint, class F>
+void for_each_marked_tile(const Footprint& fp, const TileGrid& grid, F&& f) {
+    for (int ty = fp.range.y0, k = 0; ty < fp.range.y1; ++ty)
+        for (int tx = fp.range.x0; tx < fp.range.x1; ++tx, ++k)
+            if (fp.tiles >> k & 1) f(size_t(grid.tile_index(tx, ty)));
+}
+
 }  // namespace
 
 Context::Footprint Context::footprint_of(const Command& c, const TileGrid& grid, unsigned thread) {
@@ -54,17 +62,17 @@ void Context::list_commands_by_tile(Commands batch, const TileGrid& grid) {
     const auto tiles = size_t(grid.count());
     auto for_each_tile = [&](size_t i, auto&& f) {
         const Footprint& fp = footprints_[i];
+        if (fp.kind == Footprint::Kind::Tiles) return for_each_marked_tile(fp, grid, f);
         const Command& c = *batch[i];
-        const bool ask = fp.kind == Footprint::Kind::AskCommand;
-        if (fp.kind == Footprint::Kind::EveryTile || (ask && !c.binned())) {
+        if (fp.kind == Footprint::Kind::EveryTile || !c.binned()) {
             for (size_t t = 0; t < tiles; ++t) f(t);
             return;
         }
-        const TileRange& r = ask ? c.tiles() : fp.range;
-        for (int ty = r.y0, k = 0; ty < r.y1; ++ty)
-            for (int tx = r.x0; tx < r.x1; ++tx, ++k) {
+        const TileRange& r = c.tiles();
+        for (int ty = r.y0; ty < r.y1; ++ty)
+            for (int tx = r.x0; tx < r.x1; ++tx) {
                 const int t = grid.tile_index(tx, ty);
-                if (ask ? c.triangles_in_tile(t) > 0 : (fp.tiles >> k & 1) != 0) f(size_t(t));
+                if (c.triangles_in_tile(t) > 0) f(size_t(t));
             }
     };
     tile_first_.assign(tiles + 1, 0);
@@ -100,9 +108,7 @@ void Context::split_tiles(size_t first, const TileGrid& grid) {
         const Footprint& fp = footprints_[i];
         if (fp.kind != Footprint::Kind::Tiles || fp.tiles == 0) continue;
         std::fill(mine.begin(), mine.end(), 0);
-        for (int ty = fp.range.y0, k = 0; ty < fp.range.y1; ++ty)
-            for (int tx = fp.range.x0; tx < fp.range.x1; ++tx, ++k)
-                if (fp.tiles >> k & 1) ++mine[tile_thread_[size_t(grid.tile_index(tx, ty))]];
+        for_each_marked_tile(fp, grid, [&](size_t t) { ++mine[tile_thread_[t]]; });
         recorded_[first + i].thread = uint16_t(std::max_element(mine.begin(), mine.end()) - mine.begin());
     }
 }
