@@ -107,7 +107,7 @@ TEST(Batches, CloseAtTheirDrawsAndBytes) {
 // (Context::split_tiles). The picture is the same on any number of threads, execution after
 // execution: scattered small draws, a small draw over more tiles than a footprint holds
 // (64), a draw too big to be small (two chunks of vertices), and a clear, in batches of
-// several sizes.
+// several sizes, and batches of draws along a strip (cut into bands column by column).
 TEST(Batches, SamePictureOnAnyThreadsExecutionAfterExecution) {
     constexpr int kW = 700, kH = 450;  // 11 x 8 tiles
     std::mt19937 rng(7);
@@ -122,6 +122,10 @@ TEST(Batches, SamePictureOnAnyThreadsExecutionAfterExecution) {
         return m;
     };
     meshes.push_back(quad(-20, -20, kW + 20, kH + 20, 0.9f));  // every tile: its footprint asks the command
+    for (int d = 0; d < 60; ++d) {  // a strip one or two tiles tall: its batches' bands are cut column by column
+        const float x = u(rng) * kW;
+        meshes.push_back(quad(x, 200 + u(rng) * 20, x + 10 + u(rng) * 40, 230 + u(rng) * 20, u(rng) * 0.8f));
+    }
     for (int d = 0; d < 300; ++d) {
         const float x = u(rng) * kW, y = u(rng) * kH, s = 4 + u(rng) * 120;
         meshes.push_back(quad(x, y, x + s, y + s * (0.5f + u(rng)), u(rng) * 0.8f));
