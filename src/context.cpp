@@ -93,12 +93,20 @@ void Context::split_tiles(size_t first, const TileGrid& grid) {
     // batch of many small draws far off is often one a few tiles tall: cut along its rows, a
     // fifth of its draws crossed the border; a screen cut into left and right halves drew
     // slower than into top and bottom ones, docs/performance.md).
+    // A command drawn in every tile (a clear) counts in neither the weights nor the bounds:
+    // it costs a tile next to nothing, and a frame's first batch would otherwise always look
+    // like the whole screen.
     const unsigned threads = pool_->size();
-    const size_t pairs = tile_commands_.size();
+    const auto everywhere = size_t(std::count_if(footprints_.begin(), footprints_.end(), [](const Footprint& fp) { return fp.kind == Footprint::Kind::EveryTile; }));
+    auto drawn = [&](uint32_t tile) { return size_t(tile_first_[tile + 1] - tile_first_[tile]) - everywhere; };
+    size_t pairs = 0;
     TileBounds bounds;
-    for (uint32_t t : busy_tiles_) bounds.include(grid.tile_x(int(t)), grid.tile_y(int(t)), grid.tile_x(int(t)), grid.tile_y(int(t)));
+    for (uint32_t t : busy_tiles_)
+        if (drawn(t) > 0) pairs += drawn(t), bounds.include(grid.tile_x(int(t)), grid.tile_y(int(t)), grid.tile_x(int(t)), grid.tile_y(int(t)));
     if (const TileRange r = bounds.range(); r.x1 - r.x0 >= 2 * (r.y1 - r.y0))  // (busy_tiles_ is in row order: now column by column)
         std::stable_sort(busy_tiles_.begin(), busy_tiles_.end(), [&](uint32_t a, uint32_t b) { return grid.tile_x(int(a)) < grid.tile_x(int(b)); });
+    auto weight = [&](uint32_t tile) { return pairs > 0 ? drawn(tile) : size_t(1); };  // (nothing but clears: the tiles alike)
+    if (pairs == 0) pairs = busy_tiles_.size();
     tile_shares_.assign(threads + 1, uint32_t(busy_tiles_.size()));
     tile_shares_[0] = 0;
     tile_thread_.resize(size_t(grid.count()));
@@ -106,7 +114,7 @@ void Context::split_tiles(size_t first, const TileGrid& grid) {
     for (unsigned k = 0, t = 0; k < busy_tiles_.size(); ++k) {
         const uint32_t tile = busy_tiles_[k];
         tile_thread_[tile] = uint16_t(t);
-        seen += tile_first_[tile + 1] - tile_first_[tile];
+        seen += weight(tile);
         while (t + 1 < threads && seen * threads >= pairs * (t + 1)) tile_shares_[++t] = k + 1;
     }
     // Next time, each small draw's front end runs on the thread of most of its tiles (ties
