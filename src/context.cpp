@@ -102,11 +102,12 @@ void Context::split_tiles(size_t first, const TileGrid& grid) {
     size_t pairs = 0;
     TileBounds bounds;
     for (uint32_t t : busy_tiles_)
-        if (drawn(t) > 0) pairs += drawn(t), bounds.include(grid.tile_x(int(t)), grid.tile_y(int(t)), grid.tile_x(int(t)), grid.tile_y(int(t)));
+        if (const size_t d = drawn(t)) pairs += d, bounds.include(grid.tile_x(int(t)), grid.tile_y(int(t)), grid.tile_x(int(t)), grid.tile_y(int(t)));
     if (const TileRange r = bounds.range(); r.x1 - r.x0 >= 2 * (r.y1 - r.y0))  // (busy_tiles_ is in row order: now column by column)
         std::stable_sort(busy_tiles_.begin(), busy_tiles_.end(), [&](uint32_t a, uint32_t b) { return grid.tile_x(int(a)) < grid.tile_x(int(b)); });
-    auto weight = [&](uint32_t tile) { return pairs > 0 ? drawn(tile) : size_t(1); };  // (nothing but clears: the tiles alike)
-    if (pairs == 0) pairs = busy_tiles_.size();
+    const bool only_clears = pairs == 0;  // (then the tiles weigh alike)
+    auto weight = [&](uint32_t tile) { return only_clears ? size_t(1) : drawn(tile); };
+    const size_t total = only_clears ? busy_tiles_.size() : pairs;
     tile_shares_.assign(threads + 1, uint32_t(busy_tiles_.size()));
     tile_shares_[0] = 0;
     tile_thread_.resize(size_t(grid.count()));
@@ -115,7 +116,7 @@ void Context::split_tiles(size_t first, const TileGrid& grid) {
         const uint32_t tile = busy_tiles_[k];
         tile_thread_[tile] = uint16_t(t);
         seen += weight(tile);
-        while (t + 1 < threads && seen * threads >= pairs * (t + 1)) tile_shares_[++t] = k + 1;
+        while (t + 1 < threads && seen * threads >= total * (t + 1)) tile_shares_[++t] = k + 1;
     }
     // Next time, each small draw's front end runs on the thread of most of its tiles (ties
     // to the first), whose core then reads what it wrote.
