@@ -7,10 +7,11 @@ each thread count, and prints a table with the ratios (and writes it to --report
 
 softraster: `softraster bench SCENE --threads T --json` (clear, all draws, MSAA resolve).
 llvmpipe:   `glref SCENE --time` with LP_NUM_THREADS=T (clear, all draws, resolve, glFinish).
-Both report the median frame time of --frames frames after --warmup frames. Each scene and
-thread count is timed in --rounds rounds, the two renderers one after the other in each
-(llvmpipe first in every other round); a round's ratio is of its two medians, and the row
-gives the median of the rounds' times and of their ratios. On a shared machine, whose speed
+Both report the median frame time of --frames frames after --warmup frames. Each scene is timed in
+--rounds rounds; a round times every thread count, the two renderers one after the other at
+each (llvmpipe first in every other round). A round's ratio is of its two medians, and its
+1 -> 2 thread speed-up is of softraster's two medians in that round; a row gives the median of
+the rounds' times, ratios and speed-ups. On a shared machine, whose speed
 drifts from second to second, a single pair of runs can land one renderer in a slow spell;
 the rounds' ratios show it, and their median does not follow one outlier."""
 import argparse, glob, json, os, platform, statistics, subprocess, sys, time
@@ -62,35 +63,40 @@ def main():
     sr = os.path.join(a.build, 'softraster')
     gl = os.path.join(a.build, 'tests', 'glref')
     threads = [int(t) for t in a.threads.split(',')]
-    rows = []
+    rows, scaling = [], []
     for scene in scenes:
         name = os.path.splitext(os.path.basename(scene))[0]
+        ours_cmd = lambda t: [sr, 'bench', scene, '--threads', str(t), '--frames', str(a.frames), '--warmup', str(a.warmup), '--json']
+        theirs_cmd = [gl, scene, '--time', '--frames', str(a.frames), '--warmup', str(a.warmup)]
+        drawn = llvmpipe_can_draw(scene)
+        # Each round times every thread count, so a round's 1 -> 2 thread speed-up is of two runs
+        # seconds apart rather than of two rows timed minutes apart.
+        ours = {t: [] for t in threads}
+        theirs = {t: [] for t in threads}
+        for r in range(a.rounds):
+            for t in threads:
+                env = dict(os.environ, LP_NUM_THREADS=str(t))
+                if drawn and r % 2: theirs[t].append(run_json(theirs_cmd, env)['median_ms'])
+                ours[t].append(run_json(ours_cmd(t))['median_ms'])
+                if drawn and not r % 2: theirs[t].append(run_json(theirs_cmd, env)['median_ms'])
         for t in threads:
-            env = dict(os.environ, LP_NUM_THREADS=str(t))
-            ours_cmd = [sr, 'bench', scene, '--threads', str(t), '--frames', str(a.frames), '--warmup', str(a.warmup), '--json']
-            if not llvmpipe_can_draw(scene):
-                ours = statistics.median(run_json(ours_cmd)['median_ms'] for _ in range(a.rounds))
-                rows.append((name, t, ours, None, None))
-                print('%-22s %d thread(s): softraster %8.1f ms   (llvmpipe cannot draw it)' % (name, t, ours), flush=True)
+            if not drawn:
+                rows.append((name, t, statistics.median(ours[t]), None, None))
+                print('%-22s %d thread(s): softraster %8.1f ms   (llvmpipe cannot draw it)' % (name, t, rows[-1][2]), flush=True)
                 continue
-            theirs_cmd = [gl, scene, '--time', '--frames', str(a.frames), '--warmup', str(a.warmup)]
-            ours, theirs, ratios = [], [], []
-            for r in range(a.rounds):
-                if r % 2: theirs.append(run_json(theirs_cmd, env)['median_ms'])
-                ours.append(run_json(ours_cmd)['median_ms'])
-                if not r % 2: theirs.append(run_json(theirs_cmd, env)['median_ms'])
-                ratios.append(ours[-1] / theirs[-1])
+            ratios = [o / l for o, l in zip(ours[t], theirs[t])]
             ratio = statistics.median(ratios)
-            rows.append((name, t, statistics.median(ours), statistics.median(theirs), ratio))
+            rows.append((name, t, statistics.median(ours[t]), statistics.median(theirs[t]), ratio))
             print('%-22s %d thread(s): softraster %8.1f ms   llvmpipe %8.1f ms   ratio %.2f %s   (rounds: %s)' %
-                  (name, t, statistics.median(ours), statistics.median(theirs), ratio, 'ok' if ratio <= TARGET else 'MISSED',
+                  (name, t, rows[-1][2], rows[-1][3], ratio, 'ok' if ratio <= TARGET else 'MISSED',
                    ' '.join('%.2f' % x for x in ratios)), flush=True)
-    by = {(n, t): (s, l) for n, t, s, l, _ in rows}
-    scaling = []
-    if 1 in threads and 2 in threads:
-        for name in dict.fromkeys(r[0] for r in rows):
-            theirs = by[(name, 1)][1] / by[(name, 2)][1] if by[(name, 1)][1] else None
-            scaling.append((name, by[(name, 1)][0] / by[(name, 2)][0], theirs))
+        if 1 in threads and 2 in threads:
+            gains = [one / two for one, two in zip(ours[1], ours[2])]
+            theirs_gain = statistics.median(one / two for one, two in zip(theirs[1], theirs[2])) if drawn else None
+            scaling.append((name, statistics.median(gains), theirs_gain))
+            print('%-22s 1 -> 2 threads: softraster %.2fx %s   (rounds: %s)%s' %
+                  (name, scaling[-1][1], 'ok' if scaling[-1][1] >= SCALING else 'MISSED', ' '.join('%.2f' % x for x in gains),
+                   '   llvmpipe %.2fx' % theirs_gain if drawn else ''), flush=True)
     if a.report:
         tail = kept_tail(a.report)
         with open(a.report, 'w') as f:
@@ -119,7 +125,8 @@ llvmpipe's median frame time, and 1.8 times as fast with two threads as with one
 
 - Machine: {machine}
 - Date: {date}; {frames} timed frames after {warmup} warm-up frames; threads {threads}; {rounds}
-  rounds, the two renderers in turn (a row: the median of the rounds' times and of their ratios)
+  rounds, each timing every thread count, the two renderers in turn (a row: the median of the
+  rounds' times and ratios; a speed-up: the median of the rounds' one-thread over two-thread times)
 - Command: `scripts/bench-compare.py --report docs/performance.md` after
   `cmake -S . -B build-release -G Ninja -DCMAKE_BUILD_TYPE=Release && cmake --build build-release`
 - softraster: `softraster bench SCENE --threads T --json` (clear, every draw, and with MSAA the
