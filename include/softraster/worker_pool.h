@@ -1,8 +1,8 @@
 // A fixed set of worker threads that run parallel loops: the calling thread takes part.
 // Each thread starts on a share of its own, a contiguous run of the indices, and takes them
-// in order; a thread whose share is done takes the last indices of the fullest share left
-// (work stealing), so a slow item does not hold up the others. Neighbouring items thus run
-// on one core one after another: the back end's screen tiles side by side, whose
+// in order; a thread whose share is done takes the back half of the fullest share left as
+// its own (work stealing), so a slow item does not hold up the others. Neighbouring items
+// thus run on one core one after another: the back end's screen tiles side by side, whose
 // framebuffer rows and texels lie next to each other in memory, and the front end's chunks
 // of a mesh. Handing out indices one at a time from one shared counter interleaved the
 // threads' tiles instead (docs/performance.md, "Tiles in shares").
@@ -44,7 +44,7 @@ public:
 private:
     void worker_main(unsigned thread);
     void run_items(unsigned thread);
-    bool steal(size_t& index);  // from the back of the fullest share; false: all are done
+    bool steal(unsigned thief, size_t& index);  // the back half of the fullest share; false: all are done
     bool wait_for_loop(uint64_t seen);  // false: the pool is stopping
 
     std::vector<std::thread> workers_;
@@ -52,7 +52,7 @@ private:
     std::condition_variable wake_, done_;
     const std::function<void(size_t, unsigned)>* job_ = nullptr;
     // A thread's share of the current loop, the indices [begin, end) packed as begin << 32 |
-    // end, so that its owner (from the front) and thieves (from the back) claim an index
+    // end, so that its owner (an index from the front) and thieves (half from the back) claim
     // with one compare-and-swap. One cache line each: the owner claims at every item.
     struct alignas(64) Share {
         std::atomic<uint64_t> run{0};

@@ -34,6 +34,22 @@ void expect_loop_runs_each_item_once(WorkerPool& pool, size_t count, std::chrono
     for (size_t i = 0; i < count; ++i) EXPECT_EQ(runs[i].load(), 1) << "item " << i << " of " << count;
 }
 
+// The share property: thread t's first items are its share [begin, end) from the front,
+// in order, until the share is empty; every other item of the share, whoever ran it, a
+// thief took from its back, so it comes after all of those.
+void expect_share_taken_from_the_front(const std::vector<std::vector<size_t>>& order, unsigned t, size_t begin, size_t end) {
+    size_t next = begin;  // past the owner's run from the front
+    for (size_t i : order[t]) {
+        if (i != next || i >= end) break;
+        ++next;
+    }
+    for (unsigned thread = 0; thread < order.size(); ++thread)
+        for (size_t k = thread == t ? next - begin : 0; k < order[thread].size(); ++k) {
+            const size_t i = order[thread][k];
+            if (i >= begin && i < end) EXPECT_GE(i, next) << "thread " << thread << " took item " << i << " of thread " << t << "'s share from its front";
+        }
+}
+
 }  // namespace
 
 TEST(WorkerPool, LoopsBackToBackRunEachItemOnce) {
@@ -78,17 +94,33 @@ TEST(WorkerPool, EachThreadRunsItsOwnShareFromTheFront) {
                 order[thread].push_back(i);
                 std::this_thread::sleep_for(std::chrono::microseconds(300));
             });
-            for (unsigned t = 0; t < threads; ++t) {
-                const size_t begin = kCount * t / threads, end = kCount * (t + 1) / threads;
-                size_t next = begin;  // the owner's items of its share: begin, begin + 1, ...
-                for (size_t i : order[t])
-                    if (i >= begin && i < end) EXPECT_EQ(i, next++) << "thread " << t << " of " << threads;
-                for (unsigned thief = 0; thief < threads; ++thief)
-                    if (thief != t)
-                        for (size_t i : order[thief])
-                            if (i >= begin && i < end) EXPECT_GE(i, next) << "thread " << thief << " stole from the front of " << t;
-            }
+            for (unsigned t = 0; t < threads; ++t) expect_share_taken_from_the_front(order, t, kCount * t / threads, kCount * (t + 1) / threads);
         }
+    }
+}
+
+// A thread whose share is done takes the back half of the fullest share left, as its own,
+// from its front: with the caller's share all 40 items and the worker's none, the worker's
+// first item is in the back half and its next ones follow it in order. (One index at a
+// time from the back, the worker ran 39, 38, 37...; two cores claiming from one share moved
+// its cache line at every item.)
+TEST(WorkerPool, AThiefTakesTheBackHalfAndRunsItInOrder) {
+    WorkerPool pool(2);
+    constexpr size_t kCount = 40;
+    const std::vector<uint32_t> shares = {0, kCount, kCount};
+    std::vector<std::vector<size_t>> order(2);
+    for (int loop = 0; loop < 3; ++loop) {
+        for (auto& o : order) o.clear();
+        pool.parallel_for(kCount, [&](size_t i, unsigned thread) {
+            order[thread].push_back(i);
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }, shares);
+        expect_share_taken_from_the_front(order, 0, 0, kCount);
+        ASSERT_GE(order[1].size(), 3u) << "the worker took nothing in 40 ms";
+        const size_t first = order[1][0];
+        EXPECT_GE(first, kCount / 2) << "not from the back half";
+        EXPECT_EQ(order[1][1], first + 1);
+        EXPECT_EQ(order[1][2], first + 2);
     }
 }
 
@@ -106,13 +138,7 @@ TEST(WorkerPool, GivenSharesEachThreadStartsOnItsOwn) {
             order[thread].push_back(i);
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }, shares);
-        for (unsigned t = 0; t < 2; ++t) {
-            size_t next = shares[t];
-            for (size_t i : order[t])
-                if (i >= shares[t] && i < shares[t + 1]) EXPECT_EQ(i, next++) << "thread " << t;
-            for (size_t i : order[1 - t])
-                if (i >= shares[t] && i < shares[t + 1]) EXPECT_GE(i, next) << "thread " << 1 - t << " stole from the front of " << t;
-        }
+        for (unsigned t = 0; t < 2; ++t) expect_share_taken_from_the_front(order, t, shares[t], shares[t + 1]);
         EXPECT_EQ(order[0].size() + order[1].size(), kCount);
         ASSERT_FALSE(order[0].empty());
         EXPECT_EQ(order[0].front(), 0u);
