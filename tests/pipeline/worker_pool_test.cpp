@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -46,8 +47,22 @@ void expect_share_taken_from_the_front(const std::vector<std::vector<size_t>>& o
     for (unsigned thread = 0; thread < order.size(); ++thread)
         for (size_t k = thread == t ? next - begin : 0; k < order[thread].size(); ++k) {
             const size_t i = order[thread][k];
-            if (i >= begin && i < end) EXPECT_GE(i, next) << "thread " << thread << " took item " << i << " of thread " << t << "'s share from its front";
+            if (i >= begin && i < end) {
+                EXPECT_GE(i, next) << "thread " << thread << " took item " << i << " of thread " << t << "'s share from its front";
+            }
         }
+}
+
+// Runs a loop of `count` items, each sleeping `work`, and returns the items each thread ran,
+// in its order.
+std::vector<std::vector<size_t>> order_of_loop(WorkerPool& pool, size_t count, std::chrono::microseconds work,
+                                               std::span<const uint32_t> shares = {}) {
+    std::vector<std::vector<size_t>> order(pool.size());  // each thread writes only its own
+    pool.parallel_for(count, [&](size_t i, unsigned thread) {
+        order[thread].push_back(i);
+        std::this_thread::sleep_for(work);
+    }, shares);
+    return order;
 }
 
 }  // namespace
@@ -87,13 +102,8 @@ TEST(WorkerPool, EachThreadRunsItsOwnShareFromTheFront) {
     for (unsigned threads : {2u, 3u}) {
         WorkerPool pool(threads);
         constexpr size_t kCount = 48;
-        std::vector<std::vector<size_t>> order(threads);  // each thread writes only its own
-        for (int loop = 0; loop < 3; ++loop) {            // the workers awake after the first
-            for (auto& o : order) o.clear();
-            pool.parallel_for(kCount, [&](size_t i, unsigned thread) {
-                order[thread].push_back(i);
-                std::this_thread::sleep_for(std::chrono::microseconds(300));
-            });
+        for (int loop = 0; loop < 3; ++loop) {  // the workers awake after the first
+            const auto order = order_of_loop(pool, kCount, std::chrono::microseconds(300));
             for (unsigned t = 0; t < threads; ++t) expect_share_taken_from_the_front(order, t, kCount * t / threads, kCount * (t + 1) / threads);
         }
     }
@@ -109,13 +119,8 @@ TEST(WorkerPool, AThiefTakesTheBackHalfAndRunsItInOrder) {
     WorkerPool pool(2);
     constexpr size_t kCount = 80;
     const std::vector<uint32_t> shares = {0, kCount, kCount};
-    std::vector<std::vector<size_t>> order(2);
     for (int loop = 0; loop < 3; ++loop) {
-        for (auto& o : order) o.clear();
-        pool.parallel_for(kCount, [&](size_t i, unsigned thread) {
-            order[thread].push_back(i);
-            std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        }, shares);
+        const auto order = order_of_loop(pool, kCount, std::chrono::milliseconds(1), shares);
         expect_share_taken_from_the_front(order, 0, 0, kCount);
         ASSERT_GE(order[1].size(), 3u) << "the worker took fewer than three items in 80 ms";
         const size_t first = order[1][0];
@@ -132,18 +137,15 @@ TEST(WorkerPool, GivenSharesEachThreadStartsOnItsOwn) {
     WorkerPool pool(2);
     constexpr size_t kCount = 40;
     const std::vector<uint32_t> shares = {0, 30, 40};  // the caller 30, the worker 10
-    std::vector<std::vector<size_t>> order(2);
     for (int loop = 0; loop < 3; ++loop) {
-        for (auto& o : order) o.clear();
-        pool.parallel_for(kCount, [&](size_t i, unsigned thread) {
-            order[thread].push_back(i);
-            std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        }, shares);
+        const auto order = order_of_loop(pool, kCount, std::chrono::milliseconds(1), shares);
         for (unsigned t = 0; t < 2; ++t) expect_share_taken_from_the_front(order, t, shares[t], shares[t + 1]);
         EXPECT_EQ(order[0].size() + order[1].size(), kCount);
         ASSERT_FALSE(order[0].empty());
         EXPECT_EQ(order[0].front(), 0u);
-        if (!order[1].empty()) EXPECT_EQ(order[1].front(), 30u);  // (the caller could take 30 only after some 39 ms)
+        if (!order[1].empty()) {
+            EXPECT_EQ(order[1].front(), 30u);  // (the caller could take 30 only after some 39 ms)
+        }
     }
     auto nothing = [](size_t, unsigned) {};
     for (const std::vector<uint32_t>& bad : {std::vector<uint32_t>{0, 40}, std::vector<uint32_t>{0, 20, 39}, std::vector<uint32_t>{1, 20, 40},
