@@ -7,12 +7,12 @@ each thread count, and prints a table with the ratios (and writes it to --report
 
 softraster: `softraster bench SCENE --threads T --json` (clear, all draws, MSAA resolve).
 llvmpipe:   `glref SCENE --time` with LP_NUM_THREADS=T (clear, all draws, resolve, glFinish).
-Both report the median frame time of --frames frames after --warmup frames. Each scene is timed in
---rounds rounds; a round times every thread count, the two renderers one after the other at
-each (llvmpipe first in every other round). A round's ratio is of its two medians, and its
-1 -> 2 thread speed-up is of softraster's two medians in that round; a row gives the median of
-the rounds' times, ratios and speed-ups. On a shared machine, whose speed
-drifts from second to second, a single pair of runs can land one renderer in a slow spell;
+Both report the median frame time of --frames frames after --warmup frames. Each scene is
+timed in --rounds rounds; a round times every thread count, the two renderers one after the
+other at each (llvmpipe first in every other round). A round's ratio is of its two medians,
+and its 1 -> 2 thread speed-up is of softraster's two medians in that round; a row gives the
+median of the rounds' times, ratios and speed-ups. On a shared machine, whose speed drifts
+from second to second, a single pair of runs can land one renderer in a slow spell;
 the rounds' ratios show it, and their median does not follow one outlier."""
 import argparse, glob, json, os, platform, statistics, subprocess, sys, time
 

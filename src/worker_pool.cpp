@@ -16,15 +16,14 @@ uint64_t pack(uint64_t begin, uint64_t end) { return begin << 32 | end; }
 uint64_t begin_of(uint64_t run) { return run >> 32; }
 uint64_t end_of(uint64_t run) { return run & 0xffffffffu; }
 
-// Claims one index of a share, its first (front) or its last; false if it has none left.
-bool claim(std::atomic<uint64_t>& share, bool front, size_t& index) {
+// Claims the first index of a share (its owner's claim); false if it has none left.
+bool claim(std::atomic<uint64_t>& share, size_t& index) {
     uint64_t run = share.load(std::memory_order_relaxed);
     for (;;) {
         const uint64_t b = begin_of(run), e = end_of(run);
         if (b >= e) return false;
-        const uint64_t rest = front ? pack(b + 1, e) : pack(b, e - 1);
-        if (share.compare_exchange_weak(run, rest, std::memory_order_relaxed)) {
-            index = size_t(front ? b : e - 1);
+        if (share.compare_exchange_weak(run, pack(b + 1, e), std::memory_order_relaxed)) {
+            index = size_t(b);
             return true;
         }
     }
@@ -73,7 +72,7 @@ WorkerPool::~WorkerPool() {
 void WorkerPool::run_items(unsigned thread) {
     size_t i;
     for (;;) {
-        while (claim(shares_[thread].run, /*front=*/true, i)) (*job_)(i, thread);
+        while (claim(shares_[thread].run, i)) (*job_)(i, thread);
         if (!steal(thread, i)) return;
         (*job_)(i, thread);
     }
