@@ -85,18 +85,16 @@ bool WorkerPool::steal(unsigned thief, size_t& index) {
     // (docs/performance.md). With half, the thief then claims from its own share.
     for (;;) {
         Share* fullest = nullptr;
-        uint64_t most = 0;
+        uint64_t most = 0, run = 0;
         for (unsigned t = 0; t < size(); ++t) {
-            const uint64_t run = shares_[t].run.load(std::memory_order_relaxed);
-            const uint64_t left = end_of(run) - begin_of(run);  // (claims keep begin <= end)
-            if (left > most) fullest = &shares_[t], most = left;
+            const uint64_t r = shares_[t].run.load(std::memory_order_relaxed);
+            const uint64_t left = end_of(r) - begin_of(r);  // (claims keep begin <= end)
+            if (left > most) fullest = &shares_[t], most = left, run = r;
         }
         // (None left: every index is claimed, or is in the share of a thief that has yet to
         // store it, and that thief claims it itself.)
         if (!fullest) return false;
-        uint64_t run = fullest->run.load(std::memory_order_relaxed);
-        const uint64_t b = begin_of(run), e = end_of(run);
-        if (b >= e) continue;
+        const uint64_t b = begin_of(run), e = end_of(run);  // (as scanned; the swap fails if it has changed)
         const uint64_t first = e - (e - b + 1) / 2;  // (the back half, rounded up: at least one)
         if (!fullest->run.compare_exchange_weak(run, pack(b, first), std::memory_order_relaxed)) continue;
         index = size_t(first);
