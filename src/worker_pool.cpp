@@ -70,11 +70,12 @@ WorkerPool::~WorkerPool() {
 }
 
 void WorkerPool::run_items(unsigned thread) {
+    const Job job = job_;
     size_t i;
     for (;;) {
-        while (claim(shares_[thread].run, i)) (*job_)(i, thread);
+        while (claim(shares_[thread].run, i)) job.call(job.data, i, thread);
         if (!steal(thread, i)) return;
-        (*job_)(i, thread);
+        job.call(job.data, i, thread);
     }
 }
 
@@ -126,17 +127,17 @@ void WorkerPool::worker_main(unsigned thread) {
     }
 }
 
-void WorkerPool::parallel_for(size_t count, const std::function<void(size_t, unsigned)>& fn, std::span<const uint32_t> shares) {
+void WorkerPool::run(size_t count, Job job, std::span<const uint32_t> shares) {
     const uint64_t n = size();
     if (!shares.empty() && (shares.size() != n + 1 || shares[0] != 0 || shares[n] != count || !std::is_sorted(shares.begin(), shares.end())))
         throw std::invalid_argument("WorkerPool::parallel_for: shares are not size() + 1 bounds from 0 to count");
     if (count == 0) return;
     if (workers_.empty() || count == 1) {
-        for (size_t i = 0; i < count; ++i) fn(i, 0);
+        for (size_t i = 0; i < count; ++i) job.call(job.data, i, 0);
         return;
     }
     if (count > std::numeric_limits<uint32_t>::max()) throw std::length_error("WorkerPool::parallel_for: 2^32 items or more");
-    job_ = &fn;
+    job_ = job;
     for (uint64_t t = 0; t < n; ++t) {
         const uint64_t begin = shares.empty() ? count * t / n : shares[t], end = shares.empty() ? count * (t + 1) / n : shares[t + 1];
         shares_[t].run.store(pack(begin, end), std::memory_order_relaxed);
@@ -150,7 +151,7 @@ void WorkerPool::parallel_for(size_t count, const std::function<void(size_t, uns
     run_items(0);
     open_.store(false);
     watch_then_sleep(mutex_, done_, [&] { return joined_.load() == 0; });
-    job_ = nullptr;
+    job_ = {};
 }
 
 }  // namespace softraster

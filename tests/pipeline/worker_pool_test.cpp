@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <stdexcept>
 #include <span>
 #include <thread>
@@ -151,4 +152,28 @@ TEST(WorkerPool, GivenSharesEachThreadStartsOnItsOwn) {
     for (const std::vector<uint32_t>& bad : {std::vector<uint32_t>{0, 40}, std::vector<uint32_t>{0, 20, 39}, std::vector<uint32_t>{1, 20, 40},
                                              std::vector<uint32_t>{0, 30, 20, 40}, std::vector<uint32_t>{0, 30, 20}})
         EXPECT_THROW(pool.parallel_for(kCount, nothing, bad), std::invalid_argument);
+}
+
+// Every thread reads the loop's function at every index: it is a copy of the caller's, on
+// cache lines that hold nothing else (64-byte aligned, whole lines), not the caller's object,
+// whose lines the caller's stack may share (worker_pool.h).
+TEST(WorkerPool, TheLoopsFunctionIsACopyOnLinesOfItsOwn) {
+    struct Probe {
+        std::atomic<const void*>* seen;  // where each call's function lay
+        std::atomic<bool>* same_everywhere;
+        void operator()(size_t, unsigned) const {
+            const void* expected = nullptr;
+            if (!seen->compare_exchange_strong(expected, this) && expected != this) *same_everywhere = false;
+        }
+    };
+    static_assert(sizeof(Probe) < 64);
+    WorkerPool pool(2);
+    std::atomic<const void*> seen{nullptr};
+    std::atomic<bool> same_everywhere{true};
+    const Probe probe{&seen, &same_everywhere};
+    pool.parallel_for(64, probe);
+    ASSERT_NE(seen.load(), nullptr);
+    EXPECT_NE(seen.load(), static_cast<const void*>(&probe));
+    EXPECT_EQ(reinterpret_cast<uintptr_t>(seen.load()) % 64, 0u);
+    EXPECT_TRUE(same_everywhere.load());  // (one copy, read by every thread)
 }
