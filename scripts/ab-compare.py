@@ -22,16 +22,6 @@ bench_compare = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(bench_compare)
 
 
-def scene_path(name):
-    if os.path.isfile(name):
-        return name
-    named = os.path.join(ROOT, 'bench', 'scenes', name + ('' if name.endswith('.json') else '.json'))
-    if os.path.isfile(named):
-        return named
-    print('ab-compare: %s: no such scene file, nor one of that name in bench/scenes' % name, file=sys.stderr)
-    sys.exit(2)
-
-
 def frame_ms(program, scene, threads, frames):
     """A run's median and fastest frame times."""
     j = bench_compare.run_json([program, 'bench', scene, '--threads', str(threads), '--frames', str(frames), '--json'])
@@ -52,7 +42,7 @@ def main():
             p.error('%s: not an executable file' % program)
     if a.rounds < 1 or a.threads < 1 or a.frames < 1:
         p.error('--rounds, --threads and --frames must be at least 1')
-    scenes = [scene_path(s) for s in a.scenes]
+    scenes = [bench_compare.scene_path(s, 'ab-compare') for s in a.scenes]
     for scene in scenes:
         programs, times, fastest = {'old': a.old, 'new': a.new}, {'old': [], 'new': []}, {'old': [], 'new': []}
         for k in range(a.rounds):

@@ -28,6 +28,18 @@ def run_json(cmd, env=None):
     return json.loads(r.stdout.strip().splitlines()[-1])
 
 
+def scene_path(name, tool='bench-compare'):
+    """A scene file, or the file of that name in bench/scenes (bench_trilinear); exits with
+    status 2 and one line on stderr if there is neither."""
+    if os.path.isfile(name):
+        return name
+    named = os.path.join(ROOT, 'bench', 'scenes', name + ('' if name.endswith('.json') else '.json'))
+    if os.path.isfile(named):
+        return named
+    print('%s: %s: no such scene file, nor one of that name in bench/scenes' % (tool, name), file=sys.stderr)
+    sys.exit(2)
+
+
 def llvmpipe_can_draw(scene):
     """llvmpipe offers 1 and 4 samples only: scenes with others are timed for softraster alone."""
     return json.load(open(scene))['image'].get('samples', 1) in (1, 4)
@@ -50,19 +62,24 @@ def machine():
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument('--build', default=os.path.join(ROOT, 'build-release'))
-    ap.add_argument('--threads', default='1,2')
-    ap.add_argument('--frames', type=int, default=10)
-    ap.add_argument('--warmup', type=int, default=2)
-    ap.add_argument('--rounds', type=int, default=3)
-    ap.add_argument('--report')
-    ap.add_argument('scenes', nargs='*')
+    ap = argparse.ArgumentParser(description=__doc__.split('\n\n')[0], epilog='How the rounds are paired: see the header of the script.')
+    ap.add_argument('--build', default=os.path.join(ROOT, 'build-release'), help='the build holding softraster and tests/glref (default build-release)')
+    ap.add_argument('--threads', default='1,2', help='thread counts, comma-separated (default 1,2)')
+    ap.add_argument('--frames', type=int, default=10, help='timed frames of each run (default 10)')
+    ap.add_argument('--warmup', type=int, default=2, help='frames before the timed ones (default 2)')
+    ap.add_argument('--rounds', type=int, default=3, help='rounds per scene (default 3)')
+    ap.add_argument('--report', metavar='FILE', help='also write the table to FILE')
+    ap.add_argument('scenes', nargs='*', metavar='SCENE', help='a scene file, or a name in bench/scenes (default: every scene there)')
     a = ap.parse_args()
-    scenes = a.scenes or sorted(glob.glob(os.path.join(ROOT, 'bench', 'scenes', '*.json')))
+    try:
+        threads = [int(t) for t in a.threads.split(',')]
+    except ValueError:
+        ap.error('--threads: %s is not a comma-separated list of counts' % a.threads)
+    if min(threads) < 1 or a.frames < 1 or a.warmup < 0 or a.rounds < 1:
+        ap.error('--threads, --frames and --rounds must be at least 1, --warmup at least 0')
+    scenes = [scene_path(s) for s in a.scenes] or sorted(glob.glob(os.path.join(ROOT, 'bench', 'scenes', '*.json')))
     sr = os.path.join(a.build, 'softraster')
     gl = os.path.join(a.build, 'tests', 'glref')
-    threads = [int(t) for t in a.threads.split(',')]
     rows, scaling = [], []
     for scene in scenes:
         name = os.path.splitext(os.path.basename(scene))[0]

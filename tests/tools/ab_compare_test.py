@@ -3,7 +3,8 @@
 (old first, then new first, ...), as many rounds as asked, and reports the medians, the
 median of the rounds' ratios and that of the runs' fastest frames; a bad scene or program is
 exit 2 with its error on stderr
-(argparse adds its usage line for a program).
+(argparse adds its usage line for a program), and a scene may be named as in bench/scenes.
+bench-compare.py's bad arguments are exit 2 too.
 Two stand-in programs answer `bench ... --json` with set frame times (median and fastest) and
 log each call."""
 import os, stat, subprocess, sys
@@ -49,6 +50,19 @@ check('each run benches the scene at the threads and frames asked',
 check('medians and ratio', "old 10.00 ms, new 12.00 ms (+20.0%; median of the rounds' ratios +15.0%)" in r.stdout, r.stdout)
 # The fastest frames: old's 9 9 29 9 (median 9), new's 11 11 11 10 (median 11).
 check('fastest frames', 'fastest frames, median over the rounds: old 9.00 ms, new 11.00 ms (+22.2%)' in r.stdout, r.stdout)
+
+# A scene named without its path is bench/scenes' file of that name (bench-compare's scene_path).
+os.remove(log)
+r = subprocess.run([sys.executable, script, old, new, 'bench_fill', '--rounds', '1'], capture_output=True, text=True)
+named = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(script))), 'bench', 'scenes', 'bench_fill.json')
+calls = [line.split() for line in open(log)] if os.path.exists(log) else []
+check('a scene by name', r.returncode == 0 and len(calls) == 2 and all(c[2] == named for c in calls), (r.stderr, calls))
+
+# bench-compare (beside it) takes the same names, and says so of a missing one.
+bench_compare = os.path.join(os.path.dirname(script), 'bench-compare.py')
+for args, what in ((['no_such_scene'], "bench-compare's missing scene"), (['--threads', '1,x'], "bench-compare's bad --threads")):
+    r = subprocess.run([sys.executable, bench_compare] + args, capture_output=True, text=True)
+    check(what, r.returncode == 2 and r.stdout == '' and r.stderr.strip().splitlines()[-1:] != [] and 'Traceback' not in r.stderr, (r.returncode, r.stderr))
 
 for args, what in (([old, new, os.path.join(work, 'missing.json')], 'a missing scene'),
                    ([os.path.join(work, 'nothing'), new, scene], 'a missing program')):
