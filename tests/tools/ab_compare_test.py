@@ -62,7 +62,7 @@ check('a scene by name', r.returncode == 0 and len(calls) == 2 and all(c[2] == n
 bench_compare = os.path.join(os.path.dirname(script), 'bench-compare.py')
 for args, what in ((['no_such_scene'], "bench-compare's missing scene"), (['--threads', '1,x'], "bench-compare's bad --threads")):
     r = subprocess.run([sys.executable, bench_compare] + args, capture_output=True, text=True)
-    check(what, r.returncode == 2 and r.stdout == '' and r.stderr.strip().splitlines()[-1:] != [] and 'Traceback' not in r.stderr, (r.returncode, r.stderr))
+    check(what, r.returncode == 2 and r.stdout == '' and r.stderr.strip() != '' and 'Traceback' not in r.stderr, (r.returncode, r.stderr))
 
 for args, what in (([old, new, os.path.join(work, 'missing.json')], 'a missing scene'),
                    ([os.path.join(work, 'nothing'), new, scene], 'a missing program')):
