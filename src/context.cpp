@@ -5,17 +5,6 @@
 namespace softraster {
 namespace {
 
-// Runs fn(i, thread) for i in [0, count) on the pool (thread t starting on its share, if
-// `shares` are given: WorkerPool::parallel_for), or inline without one.
-template <class F>
-void for_each_item(WorkerPool* pool, size_t count, F&& fn, std::span<const uint32_t> shares = {}) {
-    if (pool) {
-        pool->parallel_for(count, fn, shares);
-    } else {
-        for (size_t i = 0; i < count; ++i) fn(i, 0u);
-    }
-}
-
 // Stably sorts `items` by the key thread_of(item) < threads (a counting sort), and writes
 // where each key's run begins to `shares` (threads + 1 bounds).
 template <class T, class Key>
@@ -211,7 +200,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         if (!vertex_items[k].small) vertex_items[k].thread = uint16_t(n++ * threads / big_chunks);
     group_by_thread(vertex_items, threads, [](const WorkItem& item) { return item.thread; }, item_shares_);
     place_post_transform(batch, recorded, vertex_items, threads);
-    for_each_item(pool_, vertex_items.size(), [&](size_t k, unsigned thread) {
+    parallel_for(pool_, vertex_items.size(), [&](size_t k, unsigned thread) {
         const WorkItem& item = vertex_items[k];
         Command& c = *batch[item.command];
         if (!item.small) return c.process_vertex_chunk(item.chunk, target);
@@ -220,7 +209,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         c.finish_binning(target.grid);
         footprints_[item.command] = footprint_of(c, target.grid, thread);
     }, item_shares_);
-    for_each_item(pool_, bin_items.size(), [&](size_t k, unsigned) { batch[bin_items[k].command]->bin_primitive_chunk(bin_items[k].chunk, target); });
+    parallel_for(pool_, bin_items.size(), [&](size_t k, unsigned) { batch[bin_items[k].command]->bin_primitive_chunk(bin_items[k].chunk, target); });
     for (size_t i = 0; i < size; ++i)
         if (!recorded[i].small) {
             batch[i]->finish_binning(target.grid);
@@ -241,7 +230,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     std::vector<Count> shaded(threads);
     owners_.resize(size_t(threads) * tile_samples);
     fb_->allow_deferred_clears();
-    for_each_item(pool_, busy_tiles_.size(), [&](size_t item, unsigned thread) {
+    parallel_for(pool_, busy_tiles_.size(), [&](size_t item, unsigned thread) {
         const size_t tile = busy_tiles_[item];
         const Rect rect = target.grid.tile_rect(int(tile));
         uint32_t* owners = owners_.data() + size_t(thread) * tile_samples;

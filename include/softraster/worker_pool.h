@@ -21,6 +21,7 @@
 #include <span>
 #include <thread>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace softraster {
@@ -80,5 +81,14 @@ private:
     std::atomic<unsigned> joined_{0};      // workers inside the current loop
     std::atomic<bool> stop_{false};
 };
+
+// Calls fn(index, thread) for every index in [0, count): on the pool's threads
+// (WorkerPool::parallel_for, with its `shares`), or with no pool in order on the calling
+// thread, as thread 0 (the shares then say nothing).
+template <class F>
+void parallel_for(WorkerPool* pool, size_t count, F&& fn, std::span<const uint32_t> shares = {}) {
+    if (pool) return pool->parallel_for(count, std::forward<F>(fn), shares);
+    for (size_t i = 0; i < count; ++i) fn(i, 0u);
+}
 
 }  // namespace softraster

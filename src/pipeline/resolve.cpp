@@ -114,8 +114,7 @@ void resolve(const Framebuffer& fb, Image& img, WorkerPool* pool) {
                     resolve_pixels(fb, img, begin, end);
             }
     };
-    if (pool) pool->parallel_for(size_t(bands), run);
-    else for (size_t b = 0; b < size_t(bands); ++b) run(b, 0);
+    parallel_for(pool, size_t(bands), run);
 }
 
 Image downsample_box(const Image& in, int k, ColorSpace color) {

@@ -47,11 +47,7 @@ std::vector<float> ambient_occlusion(const float* depth, int width, int height, 
     // Every pixel's position once; the samples only look them up.
     std::vector<glm::vec3> position(pixels);
     std::vector<float> ao(pixels, 1.0f);
-    auto rows = [&](auto&& row) {
-        if (pool) pool->parallel_for(size_t(height), [&](size_t y, unsigned) { row(int(y)); });
-        else
-            for (int y = 0; y < height; ++y) row(y);
-    };
+    auto rows = [&](auto&& row) { parallel_for(pool, size_t(height), [&](size_t y, unsigned) { row(int(y)); }); };
     rows([&](int y) {
         for (int x = 0; x < width; ++x) {
             const size_t i = size_t(y) * size_t(width) + size_t(x);

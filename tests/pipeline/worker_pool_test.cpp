@@ -177,3 +177,27 @@ TEST(WorkerPool, TheLoopsFunctionIsACopyOnLinesOfItsOwn) {
     EXPECT_EQ(reinterpret_cast<uintptr_t>(seen.load()) % 64, 0u);
     EXPECT_TRUE(same_everywhere.load());  // (one copy, read by every thread)
 }
+
+// parallel_for(pool, ...): without a pool, every index in order on the calling thread as
+// thread 0; with one, the pool's loop, shares and all.
+TEST(WorkerPool, TheFreeLoopRunsInlineWithoutAPool) {
+    std::vector<size_t> order;
+    bool other_thread = false;
+    const std::thread::id caller = std::this_thread::get_id();
+    parallel_for(nullptr, 5, [&](size_t i, unsigned thread) {
+        order.push_back(i);
+        if (thread != 0 || std::this_thread::get_id() != caller) other_thread = true;
+    });
+    EXPECT_EQ(order, (std::vector<size_t>{0, 1, 2, 3, 4}));
+    EXPECT_FALSE(other_thread);
+}
+
+TEST(WorkerPool, TheFreeLoopWithAPoolIsThePoolsLoop) {
+    WorkerPool pool(2);
+    std::vector<std::atomic<int>> runs(40);
+    const std::vector<uint32_t> shares = {0, 30, 40};
+    parallel_for(&pool, runs.size(), [&](size_t i, unsigned) { runs[i].fetch_add(1); }, shares);
+    for (size_t i = 0; i < runs.size(); ++i) EXPECT_EQ(runs[i].load(), 1) << "item " << i;
+    const std::vector<uint32_t> bad = {0, 20, 39};  // (the pool checks the shares it is given)
+    EXPECT_THROW(parallel_for(&pool, runs.size(), [](size_t, unsigned) {}, bad), std::invalid_argument);
+}
