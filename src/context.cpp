@@ -200,8 +200,11 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         if (!vertex_items[k].small) vertex_items[k].thread = uint16_t(n++ * threads / big_chunks);
     group_by_thread(vertex_items, threads, [](const WorkItem& item) { return item.thread; }, item_shares_);
     place_post_transform(batch, recorded, vertex_items, threads);
-    parallel_for(pool_, vertex_items.size(), [&](size_t k, unsigned thread) {
-        const WorkItem& item = vertex_items[k];
+    // (The loops' functions hold copies of what they read, not references to this frame's
+    // locals: every thread reads them at every index, and what the calling thread writes on
+    // its stack while it runs its own items may share their lines: WorkerPool::parallel_for.)
+    parallel_for(pool_, vertex_items.size(), [this, batch, target, items = vertex_items.data()](size_t k, unsigned thread) {
+        const WorkItem& item = items[k];
         Command& c = *batch[item.command];
         if (!item.small) return c.process_vertex_chunk(item.chunk, target);
         c.prepare(item.post);
@@ -209,7 +212,9 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         c.finish_binning(target.grid);
         footprints_[item.command] = footprint_of(c, target.grid, thread);
     }, item_shares_);
-    parallel_for(pool_, bin_items.size(), [&](size_t k, unsigned) { batch[bin_items[k].command]->bin_primitive_chunk(bin_items[k].chunk, target); });
+    parallel_for(pool_, bin_items.size(), [batch, target, items = bin_items.data()](size_t k, unsigned) {
+        batch[items[k].command]->bin_primitive_chunk(items[k].chunk, target);
+    });
     for (size_t i = 0; i < size; ++i)
         if (!recorded[i].small) {
             batch[i]->finish_binning(target.grid);
@@ -230,7 +235,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     std::vector<Count> shaded(threads);
     owners_.resize(size_t(threads) * tile_samples);
     fb_->allow_deferred_clears();
-    parallel_for(pool_, busy_tiles_.size(), [&](size_t item, unsigned thread) {
+    parallel_for(pool_, busy_tiles_.size(), [this, target, tile_samples, shaded = shaded.data()](size_t item, unsigned thread) {
         const size_t tile = busy_tiles_[item];
         const Rect rect = target.grid.tile_rect(int(tile));
         uint32_t* owners = owners_.data() + size_t(thread) * tile_samples;

@@ -46,6 +46,9 @@ public:
     // with what the calling thread writes while it runs its own items, and each of a worker's
     // reads fetched that line back from the caller's core: a thousand small draws lost some
     // 10% at 2 threads (docs/performance.md, "The loop's function on a line of its own").
+    // What the function refers to is read at every index as well: a loop of small items
+    // should hold copies (capture by value), not references to the caller's locals, whose
+    // lines the same writes may share (Context::execute_batch's loops lost 7% to 10% so).
     template <class F>
     void parallel_for(size_t count, F&& fn, std::span<const uint32_t> shares = {}) {
         struct alignas(64) Isolated {
