@@ -5,6 +5,19 @@
 namespace softraster {
 namespace {
 
+// How many small draws a thread claims at a time in the front end's loop
+// (WorkerPool::parallel_for's grain), when every item is one: each claim waits for the
+// stores of the draws before it, and the draws a thread has claimed are no longer there to
+// steal at the loop's end. So about kClaimBytes of post-transform vertices a claim, up to
+// kMostClaimed draws: eight of bench_many_draws' cubes, one of bench_many_spheres' spheres
+// (docs/performance.md, "A claim per small draw").
+constexpr size_t kClaimBytes = size_t(8) << 10;
+constexpr size_t kMostClaimed = 8;
+size_t small_draws_claimed(size_t draws, size_t bytes) {
+    if (draws == 0 || bytes == 0) return 1;
+    return std::clamp(kClaimBytes * draws / bytes, size_t(1), kMostClaimed);
+}
+
 // Stably sorts `items` by the key thread_of(item) < threads (a counting sort), and writes
 // where each key's run begins to `shares` (threads + 1 bounds).
 template <class T, class Key>
@@ -183,9 +196,10 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     // parallel, placed before and summed after.
     const unsigned threads = pool_ ? pool_->size() : 1;
     std::vector<WorkItem> vertex_items, bin_items;
-    size_t big_chunks = 0;
+    size_t big_chunks = 0, small_bytes = 0;
     for (size_t i = 0; i < size; ++i) {
         if (recorded[i].small) {
+            small_bytes += recorded[i].post_transform_bytes;
             // The thread it went to last time, or at first one of equal runs in draw order.
             const uint16_t thread = recorded[i].thread < threads ? recorded[i].thread : uint16_t(i * threads / size);
             vertex_items.push_back({nullptr, uint32_t(i), 0, thread, true});
@@ -211,7 +225,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         c.process_small(target);
         c.finish_binning(target.grid);
         footprints_[item.command] = footprint_of(c, target.grid, thread);
-    }, item_shares_);
+    }, item_shares_, big_chunks == 0 ? small_draws_claimed(vertex_items.size(), small_bytes) : 1);
     parallel_for(pool_, bin_items.size(), [batch, target, items = bin_items.data()](size_t k, unsigned) {
         batch[items[k].command]->bin_primitive_chunk(items[k].chunk, target);
     });

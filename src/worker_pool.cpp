@@ -16,14 +16,16 @@ uint64_t pack(uint64_t begin, uint64_t end) { return begin << 32 | end; }
 uint64_t begin_of(uint64_t run) { return run >> 32; }
 uint64_t end_of(uint64_t run) { return run & 0xffffffffu; }
 
-// Claims the first index of a share (its owner's claim); false if it has none left.
-bool claim(std::atomic<uint64_t>& share, size_t& index) {
+// Claims the first indices of a share, [first, last), up to `grain` of them (its owner's
+// claim); false if it has none left.
+bool claim(std::atomic<uint64_t>& share, uint64_t grain, size_t& first, size_t& last) {
     uint64_t run = share.load(std::memory_order_relaxed);
     for (;;) {
         const uint64_t b = begin_of(run), e = end_of(run);
         if (b >= e) return false;
-        if (share.compare_exchange_weak(run, pack(b + 1, e), std::memory_order_relaxed)) {
-            index = size_t(b);
+        const uint64_t to = std::min(e, b + grain);
+        if (share.compare_exchange_weak(run, pack(to, e), std::memory_order_relaxed)) {
+            first = size_t(b), last = size_t(to);
             return true;
         }
     }
@@ -71,9 +73,11 @@ WorkerPool::~WorkerPool() {
 
 void WorkerPool::run_items(unsigned thread) {
     const Job job = job_;
-    size_t i;
+    const uint64_t grain = grain_;
+    size_t i, first, last;
     for (;;) {
-        while (claim(shares_[thread].run, i)) job.call(job.data, i, thread);
+        while (claim(shares_[thread].run, grain, first, last))
+            for (i = first; i < last; ++i) job.call(job.data, i, thread);
         if (!steal(thread, i)) return;
         job.call(job.data, i, thread);
     }
@@ -127,10 +131,11 @@ void WorkerPool::worker_main(unsigned thread) {
     }
 }
 
-void WorkerPool::run(size_t count, Job job, std::span<const uint32_t> shares) {
+void WorkerPool::run(size_t count, Job job, std::span<const uint32_t> shares, size_t grain) {
     const uint64_t n = size();
     if (!shares.empty() && (shares.size() != n + 1 || shares[0] != 0 || shares[n] != count || !std::is_sorted(shares.begin(), shares.end())))
         throw std::invalid_argument("WorkerPool::parallel_for: shares are not size() + 1 bounds from 0 to count");
+    if (grain == 0) throw std::invalid_argument("WorkerPool::parallel_for: a grain of 0 indices");
     if (count == 0) return;
     if (workers_.empty() || count == 1) {
         for (size_t i = 0; i < count; ++i) job.call(job.data, i, 0);
@@ -138,6 +143,7 @@ void WorkerPool::run(size_t count, Job job, std::span<const uint32_t> shares) {
     }
     if (count > std::numeric_limits<uint32_t>::max()) throw std::length_error("WorkerPool::parallel_for: 2^32 items or more");
     job_ = job;
+    grain_ = grain;
     for (uint64_t t = 0; t < n; ++t) {
         const uint64_t begin = shares.empty() ? count * t / n : shares[t], end = shares.empty() ? count * (t + 1) / n : shares[t + 1];
         shares_[t].run.store(pack(begin, end), std::memory_order_relaxed);

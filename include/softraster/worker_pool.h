@@ -49,12 +49,21 @@ public:
     // What the function refers to is read at every index as well: a loop of small items
     // should hold copies (capture by value), not references to the caller's locals, whose
     // lines the same writes may share (Context::execute_batch's loops lost 7% to 10% so).
+    //
+    // A thread claims up to `grain` indices of its share at a time (at least 1; std::invalid_argument
+    // for 0), a thief still only unclaimed ones. A claim is a locked compare-and-swap, which
+    // waits until every store before it has reached the cache: after an item that ends with
+    // stores to lines not in the cache (a small draw's vertices and bins), each claim waits
+    // out their misses, which one thread alone overlaps with the next item (a thousand small
+    // draws a loop lost some 10% of the frame at 2 threads: docs/performance.md, "A claim per
+    // small draw"). A larger grain is for loops of many short items; it leaves the last
+    // items of a share fewer to steal.
     template <class F>
-    void parallel_for(size_t count, F&& fn, std::span<const uint32_t> shares = {}) {
+    void parallel_for(size_t count, F&& fn, std::span<const uint32_t> shares = {}, size_t grain = 1) {
         struct alignas(64) Isolated {
             std::remove_cvref_t<F> fn;
         } const job{std::forward<F>(fn)};
-        run(count, Job{&job, [](const void* j, size_t i, unsigned t) { static_cast<const Isolated*>(j)->fn(i, t); }}, shares);
+        run(count, Job{&job, [](const void* j, size_t i, unsigned t) { static_cast<const Isolated*>(j)->fn(i, t); }}, shares, grain);
     }
 
 private:
@@ -62,7 +71,7 @@ private:
         const void* data;
         void (*call)(const void* data, size_t index, unsigned thread);
     };
-    void run(size_t count, Job job, std::span<const uint32_t> shares);
+    void run(size_t count, Job job, std::span<const uint32_t> shares, size_t grain);
     void worker_main(unsigned thread);
     void run_items(unsigned thread);
     bool steal(unsigned thief, size_t& index);  // the back half of the fullest share; false: all are done
@@ -71,7 +80,8 @@ private:
     std::vector<std::thread> workers_;
     std::mutex mutex_;  // guards sleeping and waking only
     std::condition_variable wake_, done_;
-    Job job_{};  // the current loop's (run_items reads it once)
+    Job job_{};  // the current loop's (run_items reads it and grain_ once)
+    uint64_t grain_ = 1;
     // A thread's share of the current loop, the indices [begin, end) packed as begin << 32 |
     // end, so that its owner (an index from the front) and thieves (half from the back) claim
     // with one compare-and-swap. One cache line each: the owner claims at every item.
@@ -86,11 +96,11 @@ private:
 };
 
 // Calls fn(index, thread) for every index in [0, count): on the pool's threads
-// (WorkerPool::parallel_for, with its `shares`), or with no pool in order on the calling
-// thread, as thread 0 (the shares then say nothing).
+// (WorkerPool::parallel_for, with its `shares` and `grain`), or with no pool in order on the
+// calling thread, as thread 0 (the shares and the grain then say nothing).
 template <class F>
-void parallel_for(WorkerPool* pool, size_t count, F&& fn, std::span<const uint32_t> shares = {}) {
-    if (pool) return pool->parallel_for(count, std::forward<F>(fn), shares);
+void parallel_for(WorkerPool* pool, size_t count, F&& fn, std::span<const uint32_t> shares = {}, size_t grain = 1) {
+    if (pool) return pool->parallel_for(count, std::forward<F>(fn), shares, grain);
     for (size_t i = 0; i < count; ++i) fn(i, 0u);
 }
 

@@ -154,6 +154,41 @@ TEST(WorkerPool, GivenSharesEachThreadStartsOnItsOwn) {
         EXPECT_THROW(pool.parallel_for(kCount, nothing, bad), std::invalid_argument);
 }
 
+// With a grain, a thread claims that many items of its share at once, and a thief takes
+// only unclaimed ones. The caller's share is all 24 items, claimed 4 at a time, and its
+// first item waits until the worker has run every item it could take: the caller then has
+// run exactly its first claim, 0 to 3, and the worker the other 20. (Claimed one at a time,
+// the worker takes 1 to 23 and the caller runs 0 only.) A grain of 0 is refused.
+TEST(WorkerPool, AThreadClaimsItsGrainAtATime) {
+    WorkerPool pool(2);
+    constexpr size_t kCount = 24, kGrain = 4;
+    const std::vector<uint32_t> shares = {0, kCount, kCount};
+    for (int loop = 0; loop < 3; ++loop) {
+        std::vector<std::vector<size_t>> order(2);  // each thread writes only its own
+        std::atomic<size_t> by_worker{0};
+        std::atomic<bool> timed_out{false};
+        pool.parallel_for(kCount, [&](size_t i, unsigned thread) {
+            order[thread].push_back(i);
+            if (thread == 1) by_worker.fetch_add(1);
+            if (thread != 0 || i != 0) return;
+            const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+            while (by_worker.load() < kCount - kGrain) {
+                if (std::chrono::steady_clock::now() > until) {
+                    timed_out = true;
+                    return;
+                }
+                std::this_thread::sleep_for(std::chrono::microseconds(100));
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));  // (room for a worker that takes more)
+        }, shares, kGrain);
+        EXPECT_FALSE(timed_out.load()) << "the worker ran " << by_worker.load() << " items in 20 s";
+        EXPECT_EQ(order[0], (std::vector<size_t>{0, 1, 2, 3}));
+        EXPECT_EQ(order[1].size(), kCount - kGrain);
+    }
+    EXPECT_THROW(pool.parallel_for(kCount, [](size_t, unsigned) {}, shares, 0), std::invalid_argument);
+    EXPECT_THROW(parallel_for(&pool, kCount, [](size_t, unsigned) {}, {}, 0), std::invalid_argument);  // (the free loop passes it on)
+}
+
 // Every thread reads the loop's function at every index: it is a copy of the caller's, on
 // cache lines that hold nothing else (64-byte aligned, whole lines), not the caller's object,
 // whose lines the caller's stack may share (worker_pool.h).
