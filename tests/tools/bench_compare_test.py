@@ -4,15 +4,19 @@ threads in each round and, in the same round, `bench --threads 2 --scaling` (one
 two-thread frames in turn in one process); it reports both speed-ups, each the median of its
 rounds, against the 1.8x target, in its printout and in --report's table.
 Stand-in programs in a stand-in build directory (softraster, tests/glref) answer with set
-times and log each call."""
-import json, os, stat, subprocess, sys
+times and log each call. (That directory is a temporary one, removed at the end: a program
+named softraster left in the build tree would pass for the real one to whatever looks for it
+there.)"""
+import atexit, json, os, shutil, stat, subprocess, sys, tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import check, finish
 
 script, work = sys.argv[1:3]
-build = os.path.join(work, 'build')
-os.makedirs(os.path.join(build, 'tests'), exist_ok=True)
+os.makedirs(work, exist_ok=True)
+build = tempfile.mkdtemp(prefix='bench_compare_build_')
+atexit.register(shutil.rmtree, build, True)
+os.makedirs(os.path.join(build, 'tests'))
 log = os.path.join(work, 'calls.log')
 if os.path.exists(log):
     os.remove(log)
