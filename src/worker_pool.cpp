@@ -23,7 +23,7 @@ bool claim(std::atomic<uint64_t>& share, uint64_t grain, size_t& first, size_t& 
     for (;;) {
         const uint64_t b = begin_of(run), e = end_of(run);
         if (b >= e) return false;
-        const uint64_t to = std::min(e, b + grain);
+        const uint64_t to = b + std::min(grain, e - b);  // (not b + grain: any grain is allowed)
         if (share.compare_exchange_weak(run, pack(to, e), std::memory_order_relaxed)) {
             first = size_t(b), last = size_t(to);
             return true;

@@ -84,7 +84,7 @@ private:
     uint64_t grain_ = 1;
     // A thread's share of the current loop, the indices [begin, end) packed as begin << 32 |
     // end, so that its owner (an index from the front) and thieves (half from the back) claim
-    // with one compare-and-swap. One cache line each: the owner claims at every item.
+    // with one compare-and-swap. One cache line each: the owner claims at every grain.
     struct alignas(64) Share {
         std::atomic<uint64_t> run{0};
     };

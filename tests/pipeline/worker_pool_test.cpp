@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <span>
 #include <thread>
@@ -185,6 +186,9 @@ TEST(WorkerPool, AThreadClaimsItsGrainAtATime) {
         EXPECT_EQ(order[0], (std::vector<size_t>{0, 1, 2, 3}));
         EXPECT_EQ(order[1].size(), kCount - kGrain);
     }
+    std::vector<std::atomic<int>> runs(kCount);  // (a grain past every count: each index still once)
+    pool.parallel_for(kCount, [&](size_t i, unsigned) { runs[i].fetch_add(1); }, {}, std::numeric_limits<size_t>::max());
+    for (size_t i = 0; i < kCount; ++i) EXPECT_EQ(runs[i].load(), 1) << "item " << i << " with the largest grain";
     EXPECT_THROW(pool.parallel_for(kCount, [](size_t, unsigned) {}, shares, 0), std::invalid_argument);
     EXPECT_THROW(parallel_for(&pool, kCount, [](size_t, unsigned) {}, {}, 0), std::invalid_argument);  // (the free loop passes it on)
 }
