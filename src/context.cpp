@@ -18,6 +18,9 @@ size_t small_draws_claimed(size_t draws, size_t bytes) {
     return std::clamp(kClaimBytes * draws / bytes, size_t(1), kMostClaimed);
 }
 
+// A draw's post-transform vertices' room in a block, whole 64-byte lines.
+size_t post_bytes(size_t post_transform_bytes) { return (post_transform_bytes + 63) & ~size_t(63); }
+
 // Stably sorts `items` by the key thread_of(item) < threads (a counting sort), and writes
 // where each key's run begins to `shares` (threads + 1 bounds).
 template <class T, class Key>
@@ -155,29 +158,30 @@ void Context::execute() {
     }
 }
 
-void Context::place_post_transform(Commands batch, std::span<const Recorded> recorded, std::span<WorkItem> items, unsigned threads) {
+size_t Context::place_post_transform(Commands batch, std::span<const Recorded> recorded, std::span<const WorkItem> items, unsigned threads) {
     // Each thread's small draws' post-transform vertices in a block of the thread's, one after
-    // another in the order it takes them, the same block batch after batch: a core writes
-    // over lines it wrote itself (and mostly read back itself, Context::split_tiles). A big
-    // draw's, whose chunks every thread writes, go in the first block.
+    // another in the order it runs them (placed as each runs, execute_batch: a draw another
+    // thread stole writes into the thief's block, not among the lines its planned thread is
+    // writing), the same block batch after batch: a core writes over lines it wrote itself
+    // (and mostly read back itself, Context::split_tiles). So each block has room for every
+    // small draw of the batch. A big draw's, whose chunks every thread writes, go first in
+    // the first block, placed here.
     post_blocks_.resize(threads);
-    std::vector<size_t> bytes(threads, 0);
-    auto footprint = [&](size_t i) { return (recorded[i].post_transform_bytes + 63) & ~size_t(63); };  // (64-byte aligned)
-    auto block_of = [&](const WorkItem& item) { return item.small ? item.thread : 0u; };
+    size_t big = 0, small = 0;
     for (const WorkItem& item : items)
-        if (item.chunk == 0) bytes[block_of(item)] += footprint(item.command);
+        if (item.chunk == 0) (item.small ? small : big) += post_bytes(recorded[item.command].post_transform_bytes);
     for (unsigned t = 0; t < threads; ++t) {
         PostBlock& b = post_blocks_[t];
-        if (bytes[t] > b.size) b = {std::unique_ptr<std::byte[], AlignedDelete>(static_cast<std::byte*>(::operator new(bytes[t], std::align_val_t(64)))), bytes[t]};
-        bytes[t] = 0;
+        const size_t need = (t == 0 ? big : 0) + small;
+        if (need > b.size) b = {std::unique_ptr<std::byte[], AlignedDelete>(static_cast<std::byte*>(::operator new(need, std::align_val_t(64)))), need};
     }
-    for (WorkItem& item : items) {
-        if (item.chunk != 0) continue;
-        const unsigned t = block_of(item);
-        item.post = post_blocks_[t].memory.get() + bytes[t];
-        bytes[t] += footprint(item.command);
-        if (!item.small) batch[item.command]->prepare(item.post);
+    size_t at = 0;
+    for (const WorkItem& item : items) {
+        if (item.chunk != 0 || item.small) continue;
+        batch[item.command]->prepare(post_blocks_[0].memory.get() + at);
+        at += post_bytes(recorded[item.command].post_transform_bytes);
     }
+    return at;
 }
 
 void Context::execute_batch(size_t first, size_t size, const DrawTarget& target) {
@@ -202,26 +206,34 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
             small_bytes += recorded[i].post_transform_bytes;
             // The thread it went to last time, or at first one of equal runs in draw order.
             const uint16_t thread = recorded[i].thread < threads ? recorded[i].thread : uint16_t(i * threads / size);
-            vertex_items.push_back({nullptr, uint32_t(i), 0, thread, true});
+            vertex_items.push_back({uint32_t(i), 0, thread, true});
             continue;
         }
         Command& c = *batch[i];
-        for (size_t k = 0, n = c.vertex_chunks(); k < n; ++k) vertex_items.push_back({nullptr, uint32_t(i), uint32_t(k), 0, false}), ++big_chunks;
-        for (size_t k = 0, n = c.primitive_chunks(); k < n; ++k) bin_items.push_back({nullptr, uint32_t(i), uint32_t(k), 0, false});
+        for (size_t k = 0, n = c.vertex_chunks(); k < n; ++k) vertex_items.push_back({uint32_t(i), uint32_t(k), 0, false}), ++big_chunks;
+        for (size_t k = 0, n = c.primitive_chunks(); k < n; ++k) bin_items.push_back({uint32_t(i), uint32_t(k), 0, false});
     }
     // A big draw's chunks in equal runs over the threads.
     for (size_t k = 0, n = 0; k < vertex_items.size(); ++k)
         if (!vertex_items[k].small) vertex_items[k].thread = uint16_t(n++ * threads / big_chunks);
     group_by_thread(vertex_items, threads, [](const WorkItem& item) { return item.thread; }, item_shares_);
-    place_post_transform(batch, recorded, vertex_items, threads);
+    const size_t big_bytes = place_post_transform(batch, recorded, vertex_items, threads);
+    // Where each thread's next small draw's vertices go: its block, after the big draws' in
+    // the first. A line each: every thread moves its own at every draw.
+    struct alignas(64) Cursor {
+        std::byte* next;
+    };
+    std::vector<Cursor> cursors(threads);
+    for (unsigned t = 0; t < threads; ++t) cursors[t].next = post_blocks_[t].memory.get() + (t == 0 ? big_bytes : 0);
     // (The loops' functions hold copies of what they read, not references to this frame's
     // locals: every thread reads them at every index, and what the calling thread writes on
     // its stack while it runs its own items may share their lines: WorkerPool::parallel_for.)
-    parallel_for(pool_, vertex_items.size(), [this, batch, target, items = vertex_items.data()](size_t k, unsigned thread) {
+    parallel_for(pool_, vertex_items.size(), [this, batch, recorded, target, items = vertex_items.data(), cursors = cursors.data()](size_t k, unsigned thread) {
         const WorkItem& item = items[k];
         Command& c = *batch[item.command];
         if (!item.small) return c.process_vertex_chunk(item.chunk, target);
-        c.prepare(item.post);
+        c.prepare(cursors[thread].next);
+        cursors[thread].next += post_bytes(recorded[item.command].post_transform_bytes);
         c.process_small(target);
         c.finish_binning(target.grid);
         footprints_[item.command] = footprint_of(c, target.grid, thread);

@@ -153,13 +153,14 @@ private:
     // An item of a front-end phase: a small draw, or a chunk of a bigger one. It carries all
     // the thread that takes it reads of the batch's lists, written on the calling thread.
     struct WorkItem {
-        std::byte* post;   // a small draw's post-transform vertices (place_post_transform)
         uint32_t command;  // its index in the batch
         uint32_t chunk;
         uint16_t thread;  // whose share it goes to
         bool small;
     };
-    void place_post_transform(Commands batch, std::span<const Recorded> recorded, std::span<WorkItem> items, unsigned threads);
+    // Sizes the blocks of post-transform vertices for the batch and places the big draws' in
+    // the first; returns the bytes they take there (the small draws' are placed as they run).
+    size_t place_post_transform(Commands batch, std::span<const Recorded> recorded, std::span<const WorkItem> items, unsigned threads);
 
     Framebuffer* fb_;
     WorkerPool* pool_;
