@@ -228,12 +228,14 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     // (The loops' functions hold copies of what they read, not references to this frame's
     // locals: every thread reads them at every index, and what the calling thread writes on
     // its stack while it runs its own items may share their lines: WorkerPool::parallel_for.)
-    parallel_for(pool_, vertex_items.size(), [this, batch, recorded, target, items = vertex_items.data(), cursors = cursors.data()](size_t k, unsigned thread) {
+    // (The draw's size from the command, which the item reads anyway, not from recorded_,
+    // whose lines the calling thread wrote last.)
+    parallel_for(pool_, vertex_items.size(), [this, batch, target, items = vertex_items.data(), cursors = cursors.data()](size_t k, unsigned thread) {
         const WorkItem& item = items[k];
         Command& c = *batch[item.command];
         if (!item.small) return c.process_vertex_chunk(item.chunk, target);
         c.prepare(cursors[thread].next);
-        cursors[thread].next += post_bytes(recorded[item.command].post_transform_bytes);
+        cursors[thread].next += post_bytes(c.post_transform_bytes());
         c.process_small(target);
         c.finish_binning(target.grid);
         footprints_[item.command] = footprint_of(c, target.grid, thread);
