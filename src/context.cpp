@@ -18,6 +18,13 @@ size_t small_draws_claimed(size_t draws, size_t bytes) {
     return std::clamp(kClaimBytes * draws / bytes, size_t(1), kMostClaimed);
 }
 
+// A value each thread of a loop changes at every item, on a cache line of its own: values
+// side by side would bounce their line between the cores.
+template <class T>
+struct alignas(64) OwnLine {
+    T value{};
+};
+
 // A draw's post-transform vertices' room in a block, whole 64-byte lines.
 size_t post_bytes(size_t post_transform_bytes) { return (post_transform_bytes + 63) & ~size_t(63); }
 
@@ -219,12 +226,9 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     group_by_thread(vertex_items, threads, [](const WorkItem& item) { return item.thread; }, item_shares_);
     const size_t big_bytes = place_post_transform(batch, recorded, vertex_items, threads);
     // Where each thread's next small draw's vertices go: its block, after the big draws' in
-    // the first. A line each: every thread moves its own at every draw.
-    struct alignas(64) Cursor {
-        std::byte* next;
-    };
-    std::vector<Cursor> cursors(threads);
-    for (unsigned t = 0; t < threads; ++t) cursors[t].next = post_blocks_[t].memory.get() + (t == 0 ? big_bytes : 0);
+    // the first.
+    std::vector<OwnLine<std::byte*>> cursors(threads);
+    for (unsigned t = 0; t < threads; ++t) cursors[t].value = post_blocks_[t].memory.get() + (t == 0 ? big_bytes : 0);
     // (The loops' functions hold copies of what they read, not references to this frame's
     // locals: every thread reads them at every index, and what the calling thread writes on
     // its stack while it runs its own items may share their lines: WorkerPool::parallel_for.)
@@ -234,8 +238,8 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         const WorkItem& item = items[k];
         Command& c = *batch[item.command];
         if (!item.small) return c.process_vertex_chunk(item.chunk, target);
-        c.prepare(cursors[thread].next);
-        cursors[thread].next += post_bytes(c.post_transform_bytes());
+        c.prepare(cursors[thread].value);
+        cursors[thread].value += post_bytes(c.post_transform_bytes());
         c.process_small(target);
         c.finish_binning(target.grid);
         footprints_[item.command] = footprint_of(c, target.grid, thread);
@@ -255,12 +259,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     // framebuffer needs no locks. Runs of opaque draws with heavy overdraw are drawn in two
     // passes (hidden_surface_removal.h); everything else one command after another.
     const size_t tile_samples = size_t(kTileSize) * kTileSize * size_t(fb_->samples());
-    // Each thread's count on a cache line of its own: counts side by side would bounce their
-    // line between the cores at every draw of every tile.
-    struct alignas(64) Count {
-        uint64_t n = 0;
-    };
-    std::vector<Count> shaded(threads);
+    std::vector<OwnLine<uint64_t>> shaded(threads);  // each thread's count of fragments
     owners_.resize(size_t(threads) * tile_samples);
     fb_->allow_deferred_clears();
     parallel_for(pool_, busy_tiles_.size(), [this, target, tile_samples, shaded = shaded.data()](size_t item, unsigned thread) {
@@ -268,7 +267,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         const Rect rect = target.grid.tile_rect(int(tile));
         uint32_t* owners = owners_.data() + size_t(thread) * tile_samples;
         const std::span<Command* const> draws(tile_commands_.data() + tile_first_[tile], tile_first_[tile + 1] - tile_first_[tile]);
-        uint64_t& count = shaded[thread].n;
+        uint64_t& count = shaded[thread].value;
         for (size_t c = 0; c < draws.size();) {
             if (!draws[c]->is_clear()) fb_->settle_tile(int(tile));  // (a clear is written before anything draws over it)
             const auto [end, worth_it] = hidden_surface_run(draws, c, int(tile), rect, fb_->samples());
@@ -282,7 +281,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
             c = end;
         }
     }, tile_shares_);
-    for (const Count& s : shaded) fragments_shaded_ += s.n;
+    for (const OwnLine<uint64_t>& s : shaded) fragments_shaded_ += s.value;
 }
 
 }  // namespace softraster
