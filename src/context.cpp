@@ -51,9 +51,8 @@ void for_each_marked_tile(const Footprint& fp, const TileGrid& grid, F&& f) {
 
 }  // namespace
 
-Context::Footprint Context::footprint_of(const Command& c, const TileGrid& grid, unsigned thread) {
+Context::Footprint Context::footprint_of(const Command& c, const TileGrid& grid) {
     Footprint f;
-    f.thread = uint16_t(thread);
     if (!c.binned()) {
         f.kind = Footprint::Kind::EveryTile;
         return f;
@@ -67,13 +66,13 @@ Context::Footprint Context::footprint_of(const Command& c, const TileGrid& grid,
     return f;
 }
 
-void Context::list_commands_by_tile(Commands batch, const TileGrid& grid) {
+void Context::list_commands_by_tile(Commands batch, std::span<const Footprint> footprints, const TileGrid& grid) {
     // A counting sort of (tile, command) pairs by tile, commands in draw order: a binned
     // command in the tiles where it has triangles, any other in every tile. A small draw's
     // tiles come from its footprint, the others' from the command itself.
     const auto tiles = size_t(grid.count());
     auto for_each_tile = [&](size_t i, auto&& f) {
-        const Footprint& fp = footprints_[i];
+        const Footprint& fp = footprints[i];
         if (fp.kind == Footprint::Kind::Tiles) return for_each_marked_tile(fp, grid, f);
         const Command& c = *batch[i];
         if (fp.kind == Footprint::Kind::EveryTile || !c.binned()) {
@@ -98,7 +97,7 @@ void Context::list_commands_by_tile(Commands batch, const TileGrid& grid) {
         if (tile_first_[t + 1] > tile_first_[t]) busy_tiles_.push_back(uint32_t(t));
 }
 
-void Context::split_tiles(size_t first, const TileGrid& grid) {
+void Context::split_tiles(size_t first, std::span<const Footprint> footprints, const TileGrid& grid) {
     // The busy tiles in runs of about equal (tile, draw) pairs, one run per thread: bands of
     // the screen, as alike from one execution to the next as the scene. In row order, but
     // column by column where the busy tiles are a strip at least twice as wide as tall (a
@@ -109,7 +108,7 @@ void Context::split_tiles(size_t first, const TileGrid& grid) {
     // it costs a tile next to nothing, and a frame's first batch would otherwise always look
     // like the whole screen.
     const unsigned threads = pool_->size();
-    const auto everywhere = size_t(std::count_if(footprints_.begin(), footprints_.end(), [](const Footprint& fp) { return fp.kind == Footprint::Kind::EveryTile; }));
+    const auto everywhere = size_t(std::count_if(footprints.begin(), footprints.end(), [](const Footprint& fp) { return fp.kind == Footprint::Kind::EveryTile; }));
     auto drawn = [&](uint32_t tile) { return size_t(tile_first_[tile + 1] - tile_first_[tile]) - everywhere; };
     size_t pairs = 0;
     TileBounds bounds;
@@ -133,8 +132,8 @@ void Context::split_tiles(size_t first, const TileGrid& grid) {
     // Next time, each small draw's front end runs on the thread of most of its tiles (ties
     // to the first), whose core then reads what it wrote.
     std::vector<uint32_t> mine(threads);
-    for (size_t i = 0; i < footprints_.size(); ++i) {
-        const Footprint& fp = footprints_[i];
+    for (size_t i = 0; i < footprints.size(); ++i) {
+        const Footprint& fp = footprints[i];
         if (fp.kind != Footprint::Kind::Tiles || fp.tiles == 0) continue;
         std::fill(mine.begin(), mine.end(), 0);
         for_each_marked_tile(fp, grid, [&](size_t t) { ++mine[tile_thread_[t]]; });
@@ -197,7 +196,9 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     // (Each entry is written by the thread that runs its draw's front end, or below for big
     // draws: filled in here, on the calling thread, every line would then travel to the core
     // that writes it.)
-    footprints_.resize(size);
+    const size_t at = pool_ && pool_->size() > 1 ? first : 0;  // (footprints_)
+    if (footprints_.size() < at + size) footprints_.resize(at + size);
+    const std::span<Footprint> footprints = std::span<Footprint>(footprints_).subspan(at, size);
 
     // The front end. A small draw is one item, all of it on the thread that takes it: its
     // memory placed (Command::prepare), its vertices processed and its primitives binned
@@ -234,7 +235,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     // its stack while it runs its own items may share their lines: WorkerPool::parallel_for.)
     // (The draw's size from the command, which the item reads anyway, not from recorded_,
     // whose lines the calling thread wrote last.)
-    parallel_for(pool_, vertex_items.size(), [this, batch, target, items = vertex_items.data(), cursors = cursors.data()](size_t k, unsigned thread) {
+    parallel_for(pool_, vertex_items.size(), [batch, target, items = vertex_items.data(), cursors = cursors.data(), footprints = footprints.data()](size_t k, unsigned thread) {
         const WorkItem& item = items[k];
         Command& c = *batch[item.command];
         if (!item.small) return c.process_vertex_chunk(item.chunk, target);
@@ -242,7 +243,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         cursors[thread].value += post_bytes(c.post_transform_bytes());
         c.process_small(target);
         c.finish_binning(target.grid);
-        footprints_[item.command] = footprint_of(c, target.grid, thread);
+        footprints[item.command] = footprint_of(c, target.grid);
     }, item_shares_, big_chunks == 0 ? small_draws_claimed(vertex_items.size(), small_bytes) : 1);
     parallel_for(pool_, bin_items.size(), [batch, target, items = bin_items.data()](size_t k, unsigned) {
         batch[items[k].command]->bin_primitive_chunk(items[k].chunk, target);
@@ -250,10 +251,10 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     for (size_t i = 0; i < size; ++i)
         if (!recorded[i].small) {
             batch[i]->finish_binning(target.grid);
-            footprints_[i] = Footprint{};  // (Kind::AskCommand)
+            footprints[i] = Footprint{};  // (Kind::AskCommand)
         }
-    list_commands_by_tile(batch, target.grid);
-    if (threads > 1) split_tiles(first, target.grid);
+    list_commands_by_tile(batch, footprints, target.grid);
+    if (threads > 1) split_tiles(first, footprints, target.grid);
 
     // The back end: one thread per tile at a time, the tile's commands in draw order, so the
     // framebuffer needs no locks. Runs of opaque draws with heavy overdraw are drawn in two

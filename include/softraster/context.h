@@ -141,15 +141,15 @@ private:
     // (Context::execute_batch): the tiles of `range` whose bits `tiles` sets.
     struct Footprint {
         enum class Kind : uint8_t { EveryTile, Tiles, AskCommand } kind = Kind::AskCommand;
-        uint16_t thread = 0;  // the thread that binned it
         TileRange range;
         uint64_t tiles = 0;  // bit k: local tile k of range
     };
-    static Footprint footprint_of(const Command& c, const TileGrid& grid, unsigned thread);
+    static Footprint footprint_of(const Command& c, const TileGrid& grid);
     using Commands = std::span<const std::unique_ptr<Command>>;
     void execute_batch(size_t first, size_t size, const DrawTarget& target);  // commands [first, first + size)
-    void list_commands_by_tile(Commands batch, const TileGrid& grid);
-    void split_tiles(size_t first, const TileGrid& grid);
+    // (`footprints`: the batch's, footprints_[first, first + size).)
+    void list_commands_by_tile(Commands batch, std::span<const Footprint> footprints, const TileGrid& grid);
+    void split_tiles(size_t first, std::span<const Footprint> footprints, const TileGrid& grid);
     // An item of a front-end phase: a small draw, or a chunk of a bigger one. It carries all
     // the thread that takes it reads of the batch's lists, written on the calling thread.
     struct WorkItem {
@@ -173,7 +173,12 @@ private:
     std::vector<uint32_t> tile_first_;
     std::vector<Command*> tile_commands_;
     std::vector<uint32_t> busy_tiles_;
-    std::vector<Footprint> footprints_;   // per command of the batch
+    // With more than one thread, per command as commands_, each batch writing a part of its
+    // own: after a batch's front end the calling thread reads all of its footprints
+    // (list_commands_by_tile), and a slot the next batch reused would first have to be taken
+    // back from the caller's core by the thread that writes it (docs/performance.md,
+    // "Footprints apart"). With one, every batch reuses the first slots, still in the cache.
+    std::vector<Footprint> footprints_;
     // Where each thread's share of the front end's items and of the busy tiles begins
     // (WorkerPool::parallel_for), one past the last thread's the end.
     std::vector<uint32_t> item_shares_, tile_shares_;
