@@ -196,7 +196,8 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     // (Each entry is written by the thread that runs its draw's front end, or below for big
     // draws: filled in here, on the calling thread, every line would then travel to the core
     // that writes it.)
-    const size_t at = pool_ && pool_->size() > 1 ? first : 0;  // (footprints_)
+    const unsigned threads = pool_ ? pool_->size() : 1;
+    const size_t at = threads > 1 ? first : 0;  // (footprints_)
     if (footprints_.size() < at + size) footprints_.resize(at + size);
     const std::span<Footprint> footprints = std::span<Footprint>(footprints_).subspan(at, size);
 
@@ -206,7 +207,6 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     // have evicted them from the cache before binning), its per-tile totals summed and its
     // footprint written down. Bigger draws go in two phases, every chunk of a phase in
     // parallel, placed before and summed after.
-    const unsigned threads = pool_ ? pool_->size() : 1;
     std::vector<WorkItem> vertex_items, bin_items;
     size_t big_chunks = 0, small_bytes = 0;
     for (size_t i = 0; i < size; ++i) {

@@ -147,7 +147,7 @@ private:
     static Footprint footprint_of(const Command& c, const TileGrid& grid);
     using Commands = std::span<const std::unique_ptr<Command>>;
     void execute_batch(size_t first, size_t size, const DrawTarget& target);  // commands [first, first + size)
-    // (`footprints`: the batch's, footprints_[first, first + size).)
+    // (`footprints`: the batch's part of footprints_, execute_batch.)
     void list_commands_by_tile(Commands batch, std::span<const Footprint> footprints, const TileGrid& grid);
     void split_tiles(size_t first, std::span<const Footprint> footprints, const TileGrid& grid);
     // An item of a front-end phase: a small draw, or a chunk of a bigger one. It carries all
