@@ -66,7 +66,7 @@ Context::Footprint Context::footprint_of(const Command& c, const TileGrid& grid)
     return f;
 }
 
-void Context::list_commands_by_tile(Commands batch, std::span<const Footprint> footprints, const TileGrid& grid) {
+void Context::list_commands_by_tile(Commands batch, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists) {
     // A counting sort of (tile, command) pairs by tile, commands in draw order: a binned
     // command in the tiles where it has triangles, any other in every tile. A small draw's
     // tiles come from its footprint, the others' from the command itself.
@@ -86,18 +86,19 @@ void Context::list_commands_by_tile(Commands batch, std::span<const Footprint> f
                 if (c.triangles_in_tile(t) > 0) f(size_t(t));
             }
     };
-    tile_first_.assign(tiles + 1, 0);
-    for (size_t i = 0; i < batch.size(); ++i) for_each_tile(i, [&](size_t t) { ++tile_first_[t + 1]; });
-    for (size_t t = 1; t <= tiles; ++t) tile_first_[t] += tile_first_[t - 1];
-    tile_commands_.resize(tile_first_[tiles]);
-    std::vector<uint32_t> cursor(tile_first_.begin(), tile_first_.end() - 1);
-    for (size_t i = 0; i < batch.size(); ++i) for_each_tile(i, [&](size_t t) { tile_commands_[cursor[t]++] = batch[i].get(); });
-    busy_tiles_.clear();
+    std::vector<uint32_t>& first = lists.first;
+    first.assign(tiles + 1, 0);
+    for (size_t i = 0; i < batch.size(); ++i) for_each_tile(i, [&](size_t t) { ++first[t + 1]; });
+    for (size_t t = 1; t <= tiles; ++t) first[t] += first[t - 1];
+    lists.commands.resize(first[tiles]);
+    std::vector<uint32_t> cursor(first.begin(), first.end() - 1);
+    for (size_t i = 0; i < batch.size(); ++i) for_each_tile(i, [&](size_t t) { lists.commands[cursor[t]++] = batch[i].get(); });
+    lists.busy.clear();
     for (size_t t = 0; t < tiles; ++t)
-        if (tile_first_[t + 1] > tile_first_[t]) busy_tiles_.push_back(uint32_t(t));
+        if (first[t + 1] > first[t]) lists.busy.push_back(uint32_t(t));
 }
 
-void Context::split_tiles(size_t first, std::span<const Footprint> footprints, const TileGrid& grid) {
+void Context::split_tiles(size_t first, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists) {
     // The busy tiles in runs of about equal (tile, draw) pairs, one run per thread: bands of
     // the screen, as alike from one execution to the next as the scene. In row order, but
     // column by column where the busy tiles are a strip at least twice as wide as tall (a
@@ -109,25 +110,26 @@ void Context::split_tiles(size_t first, std::span<const Footprint> footprints, c
     // like the whole screen.
     const unsigned threads = pool_->size();
     const auto everywhere = size_t(std::count_if(footprints.begin(), footprints.end(), [](const Footprint& fp) { return fp.kind == Footprint::Kind::EveryTile; }));
-    auto drawn = [&](uint32_t tile) { return size_t(tile_first_[tile + 1] - tile_first_[tile]) - everywhere; };
+    std::vector<uint32_t>& busy = lists.busy;
+    auto drawn = [&](uint32_t tile) { return size_t(lists.first[tile + 1] - lists.first[tile]) - everywhere; };
     size_t pairs = 0;
     TileBounds bounds;
-    for (uint32_t t : busy_tiles_)
+    for (uint32_t t : busy)
         if (const size_t d = drawn(t)) pairs += d, bounds.include(grid.tile_x(int(t)), grid.tile_y(int(t)), grid.tile_x(int(t)), grid.tile_y(int(t)));
-    if (const TileRange r = bounds.range(); r.x1 - r.x0 >= 2 * (r.y1 - r.y0))  // (busy_tiles_ is in row order: now column by column)
-        std::stable_sort(busy_tiles_.begin(), busy_tiles_.end(), [&](uint32_t a, uint32_t b) { return grid.tile_x(int(a)) < grid.tile_x(int(b)); });
+    if (const TileRange r = bounds.range(); r.x1 - r.x0 >= 2 * (r.y1 - r.y0))  // (busy is in row order: now column by column)
+        std::stable_sort(busy.begin(), busy.end(), [&](uint32_t a, uint32_t b) { return grid.tile_x(int(a)) < grid.tile_x(int(b)); });
     const bool only_clears = pairs == 0;  // (then the tiles weigh alike)
     auto weight = [&](uint32_t tile) { return only_clears ? size_t(1) : drawn(tile); };
-    const size_t total = only_clears ? busy_tiles_.size() : pairs;
-    tile_shares_.assign(threads + 1, uint32_t(busy_tiles_.size()));
-    tile_shares_[0] = 0;
+    const size_t total = only_clears ? busy.size() : pairs;
+    lists.shares.assign(threads + 1, uint32_t(busy.size()));
+    lists.shares[0] = 0;
     tile_thread_.resize(size_t(grid.count()));
     size_t seen = 0;
-    for (unsigned k = 0, t = 0; k < busy_tiles_.size(); ++k) {
-        const uint32_t tile = busy_tiles_[k];
+    for (unsigned k = 0, t = 0; k < busy.size(); ++k) {
+        const uint32_t tile = busy[k];
         tile_thread_[tile] = uint16_t(t);
         seen += weight(tile);
-        while (t + 1 < threads && seen * threads >= total * (t + 1)) tile_shares_[++t] = k + 1;
+        while (t + 1 < threads && seen * threads >= total * (t + 1)) lists.shares[++t] = k + 1;
     }
     // Next time, each small draw's front end runs on the thread of most of its tiles (ties
     // to the first), whose core then reads what it wrote.
@@ -253,8 +255,11 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
             batch[i]->finish_binning(target.grid);
             footprints[i] = Footprint{};  // (Kind::AskCommand)
         }
-    list_commands_by_tile(batch, footprints, target.grid);
-    if (threads > 1) split_tiles(first, footprints, target.grid);
+    const size_t set = threads > 1 ? batches_ : 0;  // (tile_lists_; batches_ is this batch's index in the execution)
+    if (tile_lists_.size() <= set) tile_lists_.resize(set + 1);
+    TileLists& lists = tile_lists_[set];
+    list_commands_by_tile(batch, footprints, target.grid, lists);
+    if (threads > 1) split_tiles(first, footprints, target.grid, lists);
 
     // The back end: one thread per tile at a time, the tile's commands in draw order, so the
     // framebuffer needs no locks. Runs of opaque draws with heavy overdraw are drawn in two
@@ -263,11 +268,12 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     std::vector<OwnLine<uint64_t>> shaded(threads);  // each thread's count of fragments
     owners_.resize(size_t(threads) * tile_samples);
     fb_->allow_deferred_clears();
-    parallel_for(pool_, busy_tiles_.size(), [this, target, tile_samples, shaded = shaded.data()](size_t item, unsigned thread) {
-        const size_t tile = busy_tiles_[item];
+    parallel_for(pool_, lists.busy.size(), [this, target, tile_samples, shaded = shaded.data(), busy = lists.busy.data(), tile_first = lists.first.data(),
+                                            commands = lists.commands.data()](size_t item, unsigned thread) {
+        const size_t tile = busy[item];
         const Rect rect = target.grid.tile_rect(int(tile));
         uint32_t* owners = owners_.data() + size_t(thread) * tile_samples;
-        const std::span<Command* const> draws(tile_commands_.data() + tile_first_[tile], tile_first_[tile + 1] - tile_first_[tile]);
+        const std::span<Command* const> draws(commands + tile_first[tile], tile_first[tile + 1] - tile_first[tile]);
         uint64_t& count = shaded[thread].value;
         for (size_t c = 0; c < draws.size();) {
             if (!draws[c]->is_clear()) fb_->settle_tile(int(tile));  // (a clear is written before anything draws over it)
@@ -281,7 +287,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
             for (size_t k = c; k < end; ++k) count += draws[k]->shading_pass(int(tile), rect, target, uint32_t(k - c), owners);
             c = end;
         }
-    }, tile_shares_);
+    }, lists.shares);
     for (const OwnLine<uint64_t>& s : shaded) fragments_shaded_ += s.value;
 }
 

@@ -145,11 +145,21 @@ private:
         uint64_t tiles = 0;  // bit k: local tile k of range
     };
     static Footprint footprint_of(const Command& c, const TileGrid& grid);
+    // Each tile's commands of a batch in draw order: tile t's are commands[first[t] ..
+    // first[t + 1]). Built after binning, so a tile visits only the draws that touch it;
+    // `busy` lists the tiles that have any, the back end's work items, and `shares` where each
+    // thread's share of them begins (WorkerPool::parallel_for), one past the last's the end.
+    struct TileLists {
+        std::vector<uint32_t> first;
+        std::vector<Command*> commands;
+        std::vector<uint32_t> busy;
+        std::vector<uint32_t> shares;
+    };
     using Commands = std::span<const std::unique_ptr<Command>>;
     void execute_batch(size_t first, size_t size, const DrawTarget& target);  // commands [first, first + size)
-    // (`footprints`: the batch's part of footprints_, execute_batch.)
-    void list_commands_by_tile(Commands batch, std::span<const Footprint> footprints, const TileGrid& grid);
-    void split_tiles(size_t first, std::span<const Footprint> footprints, const TileGrid& grid);
+    // (`footprints`: the batch's part of footprints_; `lists`: its tile lists, execute_batch.)
+    void list_commands_by_tile(Commands batch, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists);
+    void split_tiles(size_t first, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists);
     // An item of a front-end phase: a small draw, or a chunk of a bigger one. It carries all
     // the thread that takes it reads of the batch's lists, written on the calling thread.
     struct WorkItem {
@@ -167,21 +177,19 @@ private:
     std::vector<uint32_t> owners_;  // per thread: the owner of each sample of its tile
     std::vector<std::unique_ptr<Command>> commands_;
     std::vector<Recorded> recorded_;  // per command
-    // Each tile's commands of the batch in draw order: tile t's are tile_commands_[tile_first_[t]
-    // .. tile_first_[t + 1]). Built after binning, so a tile visits only the draws that touch
-    // it; busy_tiles_ lists the tiles that have any, the back end's work items.
-    std::vector<uint32_t> tile_first_;
-    std::vector<Command*> tile_commands_;
-    std::vector<uint32_t> busy_tiles_;
+    // With more than one thread, a set per batch of the execution, as footprints_ has a part:
+    // the other threads read a batch's lists as they draw its tiles, and lists the next batch
+    // rewrote in place would first have to be taken back from their cores (docs/performance.md,
+    // "Tile lists apart"). With one, every batch reuses the first set.
+    std::vector<TileLists> tile_lists_;
     // With more than one thread, per command as commands_, each batch writing a part of its
     // own: after a batch's front end the calling thread reads all of its footprints
     // (list_commands_by_tile), and a slot the next batch reused would first have to be taken
     // back from the caller's core by the thread that writes it (docs/performance.md,
     // "Footprints apart"). With one, every batch reuses the first slots, still in the cache.
     std::vector<Footprint> footprints_;
-    // Where each thread's share of the front end's items and of the busy tiles begins
-    // (WorkerPool::parallel_for), one past the last thread's the end.
-    std::vector<uint32_t> item_shares_, tile_shares_;
+    // Where each thread's share of the front end's items begins (as TileLists::shares).
+    std::vector<uint32_t> item_shares_;
     std::vector<uint16_t> tile_thread_;  // per tile of the grid: whose share it is in
     uint64_t fragments_shaded_ = 0;
     size_t batches_ = 0;
