@@ -195,13 +195,19 @@ size_t Context::place_post_transform(Commands batch, std::span<const Recorded> r
 void Context::execute_batch(size_t first, size_t size, const DrawTarget& target) {
     const Commands batch = Commands(commands_).subspan(first, size);
     const std::span<const Recorded> recorded = std::span<const Recorded>(recorded_).subspan(first, size);
-    // (Each entry is written by the thread that runs its draw's front end, or below for big
-    // draws: filled in here, on the calling thread, every line would then travel to the core
-    // that writes it.)
+    // What one thread hands another in a batch, its footprints and its tile lists: with more
+    // than one thread, memory of the batch's own (a part of footprints_ per command, a set of
+    // tile_lists_ per batch, batches_ being this batch's index in the execution), not written
+    // again until the next execution; with one, the first part and set, still in the cache.
+    // (Each footprint is written by the thread that runs its draw's front end, or below for
+    // big draws: filled in here, on the calling thread, every line would then travel to the
+    // core that writes it.)
     const unsigned threads = pool_ ? pool_->size() : 1;
-    const size_t at = threads > 1 ? first : 0;  // (footprints_)
+    const size_t at = threads > 1 ? first : 0, set = threads > 1 ? batches_ : 0;
     if (footprints_.size() < at + size) footprints_.resize(at + size);
+    if (tile_lists_.size() <= set) tile_lists_.resize(set + 1);
     const std::span<Footprint> footprints = std::span<Footprint>(footprints_).subspan(at, size);
+    TileLists& lists = tile_lists_[set];
 
     // The front end. A small draw is one item, all of it on the thread that takes it: its
     // memory placed (Command::prepare), its vertices processed and its primitives binned
@@ -255,9 +261,6 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
             batch[i]->finish_binning(target.grid);
             footprints[i] = Footprint{};  // (Kind::AskCommand)
         }
-    const size_t set = threads > 1 ? batches_ : 0;  // (tile_lists_; batches_ is this batch's index in the execution)
-    if (tile_lists_.size() <= set) tile_lists_.resize(set + 1);
-    TileLists& lists = tile_lists_[set];
     list_commands_by_tile(batch, footprints, target.grid, lists);
     if (threads > 1) split_tiles(first, footprints, target.grid, lists);
 
