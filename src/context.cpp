@@ -208,6 +208,9 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     if (tile_lists_.size() <= set) tile_lists_.resize(set + 1);
     const std::span<Footprint> footprints = std::span<Footprint>(footprints_).subspan(at, size);
     TileLists& lists = tile_lists_[set];
+    // The last batch's tiles are drawn: the bins its front end wrote are free again.
+    bin_memory_.resize(threads);
+    for (BinMemory& m : bin_memory_) m.reset();
 
     // The front end. A small draw is one item, all of it on the thread that takes it: its
     // memory placed (Command::prepare), its vertices processed and its primitives binned
@@ -243,18 +246,19 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     // its stack while it runs its own items may share their lines: WorkerPool::parallel_for.)
     // (The draw's size from the command, which the item reads anyway, not from recorded_,
     // whose lines the calling thread wrote last.)
-    parallel_for(pool_, vertex_items.size(), [batch, target, items = vertex_items.data(), cursors = cursors.data(), footprints = footprints.data()](size_t k, unsigned thread) {
+    parallel_for(pool_, vertex_items.size(), [batch, target, items = vertex_items.data(), cursors = cursors.data(), footprints = footprints.data(),
+                                              bins = bin_memory_.data()](size_t k, unsigned thread) {
         const WorkItem& item = items[k];
         Command& c = *batch[item.command];
         if (!item.small) return c.process_vertex_chunk(item.chunk, target);
         c.prepare(cursors[thread].value);
         cursors[thread].value += post_bytes(c.post_transform_bytes());
-        c.process_small(target);
+        c.process_small(target, bins[thread]);
         c.finish_binning(target.grid);
         footprints[item.command] = footprint_of(c, target.grid);
     }, item_shares_, big_chunks == 0 ? small_draws_claimed(vertex_items.size(), small_bytes) : 1);
-    parallel_for(pool_, bin_items.size(), [batch, target, items = bin_items.data()](size_t k, unsigned) {
-        batch[items[k].command]->bin_primitive_chunk(items[k].chunk, target);
+    parallel_for(pool_, bin_items.size(), [batch, target, items = bin_items.data(), bins = bin_memory_.data()](size_t k, unsigned thread) {
+        batch[items[k].command]->bin_primitive_chunk(items[k].chunk, target, bins[thread]);
     });
     for (size_t i = 0; i < size; ++i)
         if (!recorded[i].small) {

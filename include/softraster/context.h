@@ -203,6 +203,7 @@ private:
         size_t size = 0;
     };
     std::vector<PostBlock> post_blocks_;
+    std::vector<BinMemory> bin_memory_;  // per thread: the batch's bins its front end wrote
 };
 
 }  // namespace softraster

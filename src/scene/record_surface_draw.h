@@ -61,7 +61,7 @@ SOFTRASTER_SURFACE_MODELS(SOFTRASTER_DECLARE_SURFACE_DRAW)
 #define SOFTRASTER_SURFACE_VARYING_COUNTS(X) X(1) X(3) X(4) X(6) X(7) X(9) X(10) X(12) X(13) X(16) X(20)
 #define SOFTRASTER_BIN_PHASE(N)                                                                                           \
     void phases::bin_triangles<N>(std::span<const uint32_t>, const ShadedVertex<N>*, const ClipInfo*, const DrawTarget&,       \
-                                  const SampleExtent&, FaceState, FlatVaryings, TriangleBin<N>&)
+                                  const SampleExtent&, FaceState, FlatVaryings, TriangleBin<N>&, BinMemory&)
 #define SOFTRASTER_VISIBILITY_PHASE(S, N)                                                                               \
     void phases::visibility_pass<S, N>(const BinnedTriangles<N>&, const RenderState&, Framebuffer&, int, int, const Rect&, \
                                        uint32_t, uint32_t*)

@@ -17,9 +17,12 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "softraster/pipeline/culling.h"
@@ -36,16 +39,58 @@
 
 namespace softraster {
 
+// Where one thread's bins of a batch live (Context::execute_batch): each chunk's arrays
+// (TriangleBin) taken one after another from blocks kept from batch to batch, and all given
+// back at once when the next batch starts (reset), as the post-transform vertices are
+// (Context::place_post_transform). The tile back ends read them within the same batch. With
+// arrays of its own, kept by the draw from frame to frame, a small draw's three arrays were
+// scattered over the heap, and each frame's front end first had to fetch their lines from
+// memory (docs/performance.md, "Bins in batch memory"). One per thread, on lines of its own.
+class alignas(64) BinMemory {
+public:
+    // Room for `count` values of T, aligned for it and not initialized.
+    template <class T>
+    std::span<T> take(size_t count) {
+        static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T> && alignof(T) <= alignof(std::max_align_t));
+        return {reinterpret_cast<T*>(take_bytes(count * sizeof(T), alignof(T))), count};
+    }
+    // Everything taken is free again (the blocks are kept).
+    void reset() { block_ = 0, used_ = 0; }
+
+private:
+    static constexpr size_t kBlock = size_t(256) << 10;
+    std::byte* take_bytes(size_t bytes, size_t align) {
+        for (;; ++block_, used_ = 0) {
+            if (block_ == blocks_.size()) {  // (a block of its own for an array bigger than kBlock)
+                const size_t size = std::max(kBlock, bytes);
+                blocks_.push_back({std::make_unique_for_overwrite<std::byte[]>(size), size});
+            }
+            const size_t at = (used_ + align - 1) & ~(align - 1);
+            if (at + bytes <= blocks_[block_].size) {
+                used_ = at + bytes;
+                return blocks_[block_].memory.get() + at;
+            }
+        }
+    }
+    struct Block {
+        std::unique_ptr<std::byte[]> memory;
+        size_t size;
+    };
+    std::vector<Block> blocks_;
+    size_t block_ = 0, used_ = 0;  // the block taken from, and its bytes taken
+};
+
 template <int N>
 struct TriangleBin {
     std::vector<ShadedVertex<N>> clipped;  // vertices the clipper made
     TileRange range;                       // the tiles this chunk's triangles touch
-    std::vector<TriangleRef> refs;         // grouped by tile of `range`, draw order within each
-    std::vector<uint32_t> tile_begin;      // local tile k's refs: [tile_begin[k], tile_begin[k + 1])
+    // In the BinMemory the chunk was binned with, valid until its reset:
+    std::span<TriangleRef> refs;      // grouped by tile of `range`, draw order within each
+    std::span<uint32_t> tile_begin;   // local tile k's refs: [tile_begin[k], tile_begin[k + 1])
     // Per local tile: the pixels its triangles cover, summed (add_to_tiles: exact for large
     // triangles, else each one's area, at most its bounds within the tile), an estimate of
     // the overdraw (hidden_surface_removal.h).
-    std::vector<float> covered_area;
+    std::span<float> covered_area;
 
     struct Pending {  // a (tile, triangle) pair before grouping
         uint16_t tx, ty;
@@ -59,7 +104,7 @@ struct TriangleBin {
     std::span<const TriangleRef> triangles_in(int tx, int ty) const {
         const int k = range.local(tx, ty);
         if (k < 0) return {};
-        return std::span<const TriangleRef>(refs).subspan(tile_begin[size_t(k)], tile_begin[size_t(k) + 1] - tile_begin[size_t(k)]);
+        return refs.subspan(tile_begin[size_t(k)], tile_begin[size_t(k) + 1] - tile_begin[size_t(k)]);
     }
 };
 
@@ -171,12 +216,14 @@ void add_to_tiles(TriangleBin<N>& bin, TileBounds& tiles, const TileGrid& grid, 
 }
 
 // Groups the pending triangles by tile, keeping their order (a counting sort over the
-// chunk's range of tiles).
+// chunk's range of tiles), into arrays taken from `memory`.
 template <int N>
-void group_by_tile(TriangleBin<N>& bin) {
+void group_by_tile(TriangleBin<N>& bin, BinMemory& memory) {
     const size_t tiles = size_t(bin.range.count());
-    bin.tile_begin.assign(tiles + 1, 0);
-    bin.covered_area.assign(tiles, 0.0f);
+    bin.tile_begin = memory.take<uint32_t>(tiles + 1);
+    bin.covered_area = memory.take<float>(tiles);
+    std::fill(bin.tile_begin.begin(), bin.tile_begin.end(), 0u);
+    std::fill(bin.covered_area.begin(), bin.covered_area.end(), 0.0f);
     // Every pending tile lies in the range: its index there needs no check.
     const TileRange& r = bin.range;
     auto local = [&](const auto& p) { return size_t((p.ty - r.y0) * r.width() + (p.tx - r.x0)); };
@@ -196,8 +243,8 @@ void group_by_tile(TriangleBin<N>& bin) {
         bin.covered_area[k] = area;
     }
     for (size_t k = 1; k <= tiles; ++k) bin.tile_begin[k] += bin.tile_begin[k - 1];
-    bin.refs.resize(n);
-    std::vector<uint32_t>& cursor = bin.tile_begin;  // reuse: advance each start, then shift back
+    bin.refs = memory.take<TriangleRef>(n);  // (every one written below)
+    const std::span<uint32_t> cursor = bin.tile_begin;  // reuse: advance each start, then shift back
     for (size_t i = 0; i < n;) {
         const size_t k = local(p[i]);
         uint32_t at = cursor[k];
@@ -213,17 +260,17 @@ void group_by_tile(TriangleBin<N>& bin) {
 inline constexpr size_t kKeptPending = size_t(1) << 16;
 
 // Fills the bin's pending (tile, triangle) pairs (fill() calls add_to_tiles), then groups
-// them by tile. The pending list is scratch until then: one per thread, kept from draw to
-// draw (a small draw's own list was an allocation or more per draw) unless a huge chunk grew
-// it, with room for `expected` pairs up front.
+// them by tile into `memory`. The pending list is scratch until then: one per thread, kept
+// from draw to draw (a small draw's own list was an allocation or more per draw) unless a
+// huge chunk grew it, with room for `expected` pairs up front.
 template <int N, class Fill>
-void bin_pending(TriangleBin<N>& bin, size_t expected, Fill&& fill) {
+void bin_pending(TriangleBin<N>& bin, BinMemory& memory, size_t expected, Fill&& fill) {
     static thread_local std::vector<typename TriangleBin<N>::Pending> scratch;
     bin.pending.swap(scratch);
     bin.pending.clear();
     bin.pending.reserve(expected);
     fill();
-    group_by_tile(bin);
+    group_by_tile(bin, memory);
     bin.pending.swap(scratch);
     if (scratch.capacity() > kKeptPending) scratch = {};
 }
@@ -374,10 +421,11 @@ inline void binning_verdicts8(const Corners8& c, const SampleExtent& s, const Wi
 // Eight triangles at a time (binning_verdicts8) unless Batched is false (the tests' reference).
 template <bool Wide, int N, bool Batched = true>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const ClipPlanes& planes,
-                   const Viewport& vp, const SampleExtent& samples, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
+                   const Viewport& vp, const SampleExtent& samples, FaceState faces, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin,
+                   BinMemory& memory) {
     bin.clipped.clear();
     const WindingFilter windings(faces);
-    bin_pending(bin, indices.size() / 3, [&] {  // (most triangles touch one tile)
+    bin_pending(bin, memory, indices.size() / 3, [&] {  // (most triangles touch one tile)
         TileBounds tiles;
         auto emit = [&](TriangleRef ref, const auto& a, const auto& b, const auto& c) {
             const int64_t area2 = signed_area2(a.X, a.Y, b.X, b.Y, c.X, c.Y);

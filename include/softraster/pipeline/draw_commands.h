@@ -51,12 +51,14 @@ public:
     virtual size_t vertex_chunks() const { return 0; }
     virtual void process_vertex_chunk(size_t, const DrawTarget&) {}
     virtual size_t primitive_chunks() const { return 0; }
-    virtual void bin_primitive_chunk(size_t, const DrawTarget&) {}
+    // (Binning writes the chunk's triangles per tile into `memory`, the thread's for the
+    // batch: BinMemory.)
+    virtual void bin_primitive_chunk(size_t, const DrawTarget&, BinMemory& /*memory*/) {}
     // A small draw (one chunk of vertices, one of primitives at most) goes through the front
     // end in one call on one thread: its primitives are binned right after its vertices are
     // processed, while they are still in this core's cache.
     bool small() const { return vertex_chunks() <= 1 && primitive_chunks() <= 1; }
-    virtual void process_small(const DrawTarget&) {}
+    virtual void process_small(const DrawTarget&, BinMemory& /*memory*/) {}
     // After all its chunks are binned (a small draw's right after process_small, on the
     // same thread): the per-tile totals below.
     virtual void finish_binning(const TileGrid&) {}
@@ -180,9 +182,9 @@ void process_vertices(const S& shader, std::span<const typename S::Vertex> verti
 }
 template <int N>
 void bin_triangles(std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const DrawTarget& target,
-                   const SampleExtent& samples, FaceState faces, FlatVaryings flat, TriangleBin<N>& bin) {
+                   const SampleExtent& samples, FaceState faces, FlatVaryings flat, TriangleBin<N>& bin, BinMemory& memory) {
     simd::on_best_path([&]<bool WideLanes>() {
-        softraster::bin_triangles<WideLanes>(indices, post, clip, target.planes, target.viewport, samples, faces, flat, target.grid, bin);
+        softraster::bin_triangles<WideLanes>(indices, post, clip, target.planes, target.viewport, samples, faces, flat, target.grid, bin, memory);
     });
 }
 template <int Samples, int N>
@@ -254,19 +256,19 @@ public:
     }
     // A small draw's clip parts are read by its binning alone, right after: they live in a
     // buffer of the thread's (small_draw_clip_parts), not in the draw's memory.
-    void process_small(const DrawTarget& target) override {
+    void process_small(const DrawTarget& target, BinMemory& memory) override {
         std::vector<ClipInfo>& clip = small_draw_clip_parts();
         clip.resize(vertices_.size());
         if (vertex_chunks() == 1) phases::process_vertices(shader_, vertices_, 0, vertices_.size(), target, post_, std::span<ClipInfo>(clip));
-        if (primitive_chunks() == 1) bin_chunk(0, target, clip.data());
+        if (primitive_chunks() == 1) bin_chunk(0, target, clip.data(), memory);
     }
     size_t primitive_chunks() const override { return (indices_.size() / kPer + kTriangleChunk - 1) / kTriangleChunk; }
-    void bin_primitive_chunk(size_t c, const DrawTarget& target) override { bin_chunk(c, target, clip_.data()); }
+    void bin_primitive_chunk(size_t c, const DrawTarget& target, BinMemory& memory) override { bin_chunk(c, target, clip_.data(), memory); }
     void finish_binning(const TileGrid& grid) override { sum_bins<N>(bins(), grid); }
 
 protected:
-    // Bins chunk c of the primitives, whose corners' clip parts are `clip`.
-    void bin_chunk(size_t c, const DrawTarget& target, const ClipInfo* clip) {
+    // Bins chunk c of the primitives, whose corners' clip parts are `clip`, into `memory`.
+    void bin_chunk(size_t c, const DrawTarget& target, const ClipInfo* clip, BinMemory& memory) {
         const size_t count = indices_.size() / kPer, begin = c * kTriangleChunk, end = std::min(count, begin + kTriangleChunk);
         const std::span<const uint32_t> chunk = indices_.subspan(begin * kPer, (end - begin) * kPer);
         const FlatVaryings flat{kFlatVaryings<S>, state_.provoking_vertex == ProvokingVertex::First};
@@ -275,10 +277,10 @@ protected:
         // none of its samples.
         const SampleExtent extent = with_sample_count(target.fb->samples(), []<int Samples>() { return sample_extent<Samples>(); });
         if constexpr (T == Topology::Triangles) {
-            phases::bin_triangles(chunk, post_.data(), clip, target, extent, FaceState{state_.cull, state_.front_face}, flat, bin(c));
+            phases::bin_triangles(chunk, post_.data(), clip, target, extent, FaceState{state_.cull, state_.front_face}, flat, bin(c), memory);
         } else {
             const LinePointShape shape{state_.line_width, state_.point_size, target.fb->samples() > 1, state_.front_face};
-            bin_lines_points(T, chunk, post_.data(), clip, target.planes, target.viewport, extent, shape, flat, target.grid, bin(c));
+            bin_lines_points(T, chunk, post_.data(), clip, target.planes, target.viewport, extent, shape, flat, target.grid, bin(c), memory);
         }
     }
     BinnedTriangles<N> triangles() const { return {bins(), post_.data()}; }

@@ -150,9 +150,10 @@ void point_quad(const WindowVertex<N>& p, const LinePointShape& shape, Emit&& em
 // (primitive_assembly.h), the quads, then binning (binning.h) of their two triangles each.
 template <int N>
 void bin_lines_points(Topology topology, std::span<const uint32_t> indices, const ShadedVertex<N>* post, const ClipInfo* clip, const ClipPlanes& planes,
-                      const Viewport& vp, const SampleExtent& samples, const LinePointShape& shape, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin) {
+                      const Viewport& vp, const SampleExtent& samples, const LinePointShape& shape, FlatVaryings flat, const TileGrid& grid, TriangleBin<N>& bin,
+                      BinMemory& memory) {
     bin.clipped.clear();
-    bin_pending(bin, 2 * indices.size(), [&] {  // (two triangles a quad)
+    bin_pending(bin, memory, 2 * indices.size(), [&] {  // (two triangles a quad)
         TileBounds tiles;
         std::vector<WindowVertex<N>> window;
         assemble_lines_points(topology, indices, post, clip, planes, vp, window);
