@@ -17,7 +17,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
