@@ -14,12 +14,12 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <new>
 #include <stdexcept>
 #include <vector>
 
 #include <glm/vec4.hpp>
 
+#include "softraster/cache_line_allocator.h"
 #include "softraster/image.h"
 #include "softraster/pipeline/pipeline_types.h"
 #include "softraster/srgb.h"
@@ -43,23 +43,6 @@ inline Rgba8 quantize_rgba8(const glm::vec4& c, ColorSpace space) {
     if (space == ColorSpace::Linear) return quantize_rgba8(c);
     return {srgb::encode(c.r), srgb::encode(c.g), srgb::encode(c.b), quantize_unorm8(c.a)};
 }
-
-// Storage that starts on a cache line. Threads draw different tiles at once (64 pixels
-// wide, 256 bytes of color and of depth a row): with each plane starting on a line, as do
-// its rows where a row's bytes are a multiple of 64, no line holds two tiles' pixels, which
-// would bounce between the cores' caches (a large std::vector's data sits 16 bytes past a
-// page start).
-template <class T>
-struct CacheLineAllocator {
-    using value_type = T;
-    static constexpr std::align_val_t kLine{64};
-    CacheLineAllocator() = default;
-    template <class U>
-    CacheLineAllocator(const CacheLineAllocator<U>&) {}
-    T* allocate(size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kLine)); }
-    void deallocate(T* p, size_t) { ::operator delete(p, kLine); }
-    bool operator==(const CacheLineAllocator&) const = default;
-};
 
 class Framebuffer {
 public:

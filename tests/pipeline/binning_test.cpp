@@ -6,9 +6,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <malloc.h>
 #include <random>
+#include <type_traits>
+#include <vector>
 
 #include "softraster/pipeline/binning.h"
+#include "softraster/pipeline/draw_commands.h"
 #include "softraster/pipeline/rasterization.h"
 #include "test_support.h"
 
@@ -161,6 +165,25 @@ TEST(BinMemory, TakesRoomOfItsOwnAndGivesItBackAtReset) {
     for (size_t i = 1; i < taken.size(); ++i) ASSERT_LE(taken[i - 1].end, taken[i].begin) << "two takes overlap";
     memory.reset();
     EXPECT_EQ(memory.take<uint8_t>(3).data(), first);
+}
+
+// A thread's scratch of the front end, written at every draw, takes whole cache lines of its
+// own (cache_line_allocator.h): it starts on a line, and its block reaches the end of its
+// last line, so the C library places nothing else there, for this thread or another.
+static_assert(std::is_same_v<decltype(TriangleBin<3>::pending)::allocator_type, CacheLineAllocator<TriangleBin<3>::Pending>>);
+static_assert(std::is_same_v<std::remove_reference_t<decltype(small_draw_clip_parts())>::allocator_type, CacheLineAllocator<ClipInfo>>);
+TEST(CacheLineAllocator, TakesWholeLinesOfItsOwn) {
+    struct Twenty {  // (a Pending's size: 20 bytes, not a divisor of a line)
+        uint32_t v[5];
+    };
+    CacheLineAllocator<Twenty> lines;
+    for (size_t n = 1; n <= 40; ++n) {
+        Twenty* p = lines.allocate(n);
+        const auto begin = reinterpret_cast<uintptr_t>(p), end = (begin + n * sizeof(Twenty) + 63) / 64 * 64;
+        EXPECT_EQ(begin % 64, 0u) << n;
+        EXPECT_GE(malloc_usable_size(p), end - begin) << n << " elements";
+        lines.deallocate(p, n);
+    }
 }
 
 TEST(Binning, EachTriangleInTheTilesItReachesInDrawOrder) {

@@ -24,6 +24,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "softraster/cache_line_allocator.h"
 #include "softraster/pipeline/culling.h"
 #include "softraster/pipeline/pipeline_types.h"
 #include "softraster/pipeline/primitive_assembly.h"
@@ -96,7 +97,7 @@ struct TriangleBin {
         float area;
         TriangleRef ref;
     };
-    std::vector<Pending> pending;
+    std::vector<Pending, CacheLineAllocator<Pending>> pending;  // (a thread's scratch: bin_pending)
 
     const ShadedVertex<N>& vertex(uint32_t i, const ShadedVertex<N>* post) const { return corner_vertex(i, post, clipped); }
     // The chunk's triangles in tile (tx, ty), in draw order.
@@ -264,7 +265,7 @@ inline constexpr size_t kKeptPending = size_t(1) << 16;
 // huge chunk grew it, with room for `expected` pairs up front.
 template <int N, class Fill>
 void bin_pending(TriangleBin<N>& bin, BinMemory& memory, size_t expected, Fill&& fill) {
-    static thread_local std::vector<typename TriangleBin<N>::Pending> scratch;
+    static thread_local std::vector<typename TriangleBin<N>::Pending, CacheLineAllocator<typename TriangleBin<N>::Pending>> scratch;
     bin.pending.swap(scratch);
     bin.pending.clear();
     bin.pending.reserve(expected);

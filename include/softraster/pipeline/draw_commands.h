@@ -219,9 +219,9 @@ uint64_t draw_tile_general(const LayoutShader<L>& shader, const FragmentOps& ops
 
 // The clip parts of the small draw the calling thread is processing (process_small below):
 // one buffer for every draw and every shader, reused draw after draw and so mostly in the
-// core's cache.
-inline std::vector<ClipInfo>& small_draw_clip_parts() {
-    static thread_local std::vector<ClipInfo> clip;
+// core's cache, on lines no other thread writes (cache_line_allocator.h).
+inline std::vector<ClipInfo, CacheLineAllocator<ClipInfo>>& small_draw_clip_parts() {
+    static thread_local std::vector<ClipInfo, CacheLineAllocator<ClipInfo>> clip;
     return clip;
 }
 
@@ -260,7 +260,7 @@ public:
     // A small draw's clip parts are read by its binning alone, right after: they live in a
     // buffer of the thread's (small_draw_clip_parts), not in the draw's memory.
     void process_small(const DrawTarget& target, BinMemory& memory) override {
-        std::vector<ClipInfo>& clip = small_draw_clip_parts();
+        auto& clip = small_draw_clip_parts();
         clip.resize(vertices_.size());
         if (vertex_chunks() == 1) phases::process_vertices(shader_, vertices_, 0, vertices_.size(), target, post_, std::span<ClipInfo>(clip));
         if (primitive_chunks() == 1) bin_chunk(0, target, clip.data(), memory);

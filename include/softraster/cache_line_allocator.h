@@ -1,0 +1,37 @@
+// Storage on cache lines of its own: it starts on a line and takes whole lines, so nothing
+// else the C library hands out shares a line with it.
+//
+// Two threads that write buffers side by side in memory bounce the line they share between
+// their cores at every write, though neither reads the other's data:
+//   - the framebuffer's planes: threads draw different tiles at once (64 pixels wide, 256
+//     bytes of color and of depth a row); with each plane starting on a line, as do its rows
+//     where a row's bytes are a multiple of 64, no line holds two tiles' pixels (a large
+//     std::vector's data sits 16 bytes past a page start);
+//   - a thread's scratch of the front end (a small draw's clip parts, its pending tile
+//     pairs), written at every draw: the calling thread's lay in the heap among the blocks
+//     the other threads write theirs, and its small draws took 1.5 to 1.8 times as long as
+//     theirs (docs/performance.md, "Scratch on lines of its own").
+#pragma once
+#include <cstddef>
+#include <new>
+
+namespace softraster {
+
+inline constexpr size_t kCacheLine = 64;
+
+template <class T>
+struct CacheLineAllocator {
+    using value_type = T;
+    static constexpr std::align_val_t kLine{kCacheLine};
+    CacheLineAllocator() = default;
+    template <class U>
+    CacheLineAllocator(const CacheLineAllocator<U>&) {}
+    T* allocate(size_t n) { return static_cast<T*>(::operator new(whole_lines(n), kLine)); }
+    void deallocate(T* p, size_t n) { ::operator delete(p, whole_lines(n), kLine); }
+    bool operator==(const CacheLineAllocator&) const = default;
+
+private:
+    static size_t whole_lines(size_t n) { return (n * sizeof(T) + kCacheLine - 1) / kCacheLine * kCacheLine; }
+};
+
+}  // namespace softraster
