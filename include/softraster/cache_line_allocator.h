@@ -8,9 +8,9 @@
 //     where a row's bytes are a multiple of 64, no line holds two tiles' pixels (a large
 //     std::vector's data sits 16 bytes past a page start);
 //   - a thread's scratch of the front end (a small draw's clip parts, its pending tile
-//     pairs), written at every draw: the calling thread's lay in the heap among the blocks
-//     the other threads write theirs, and its small draws took 1.5 to 1.8 times as long as
-//     theirs (docs/performance.md, "Scratch on lines of its own").
+//     pairs), written at every draw: the calling thread's lay in the main heap among blocks
+//     the workers write, and its small draws took 1.5 to 1.8 times as long as a worker's
+//     (docs/performance.md, "Scratch on lines of its own").
 #pragma once
 #include <cstddef>
 #include <new>
