@@ -21,12 +21,12 @@ size_t small_draws_claimed(size_t draws, size_t bytes) {
 // A value each thread of a loop changes at every item, on a cache line of its own: values
 // side by side would bounce their line between the cores.
 template <class T>
-struct alignas(64) OwnLine {
+struct alignas(kCacheLine) OwnLine {
     T value{};
 };
 
 // A draw's post-transform vertices' room in a block, whole 64-byte lines.
-size_t post_bytes(size_t post_transform_bytes) { return (post_transform_bytes + 63) & ~size_t(63); }
+size_t post_bytes(size_t post_transform_bytes) { return (post_transform_bytes + kCacheLine - 1) / kCacheLine * kCacheLine; }
 
 // Stably sorts `items` by the key thread_of(item) < threads (a counting sort), and writes
 // where each key's run begins to `shares` (threads + 1 bounds).
@@ -181,7 +181,7 @@ size_t Context::place_post_transform(Commands batch, std::span<const Recorded> r
     for (unsigned t = 0; t < threads; ++t) {
         PostBlock& b = post_blocks_[t];
         const size_t need = (t == 0 ? big : 0) + small;
-        if (need > b.size) b = {std::unique_ptr<std::byte[], AlignedDelete>(static_cast<std::byte*>(::operator new(need, std::align_val_t(64)))), need};
+        if (need > b.size) b = {std::unique_ptr<std::byte[], AlignedDelete>(static_cast<std::byte*>(::operator new(need, std::align_val_t(kCacheLine)))), need};
     }
     size_t at = 0;
     for (const WorkItem& item : items) {

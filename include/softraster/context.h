@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "softraster/cache_line_allocator.h"
 #include "softraster/framebuffer.h"
 #include "softraster/pipeline/draw_commands.h"
 #include "softraster/render_state.h"
@@ -196,7 +197,7 @@ private:
     // The batch's post-transform vertices (Command::prepare), a block per thread
     // (place_post_transform), each as big as the most it has held.
     struct AlignedDelete {
-        void operator()(std::byte* p) const { ::operator delete(p, std::align_val_t(64)); }
+        void operator()(std::byte* p) const { ::operator delete(p, std::align_val_t(kCacheLine)); }
     };
     struct PostBlock {
         std::unique_ptr<std::byte[], AlignedDelete> memory;

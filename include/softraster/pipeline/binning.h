@@ -46,7 +46,7 @@ namespace softraster {
 // arrays of its own, kept by the draw from frame to frame, a small draw's three arrays were
 // scattered over the heap, and each frame's front end first had to fetch their lines from
 // memory (docs/performance.md, "Bins in batch memory"). One per thread, on lines of its own.
-class alignas(64) BinMemory {
+class alignas(kCacheLine) BinMemory {
 public:
     // Room for `count` values of T, aligned for it and not initialized.
     template <class T>

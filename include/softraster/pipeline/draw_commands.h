@@ -42,7 +42,7 @@ struct DrawTarget {
 // On cache lines of its own (alignas): the front ends of two draws side by side in memory
 // may run on two threads, each writing its command, and a line the two shared went from
 // core to core (docs/performance.md, "Commands on lines of their own").
-class alignas(64) Command {
+class alignas(kCacheLine) Command {
 public:
     virtual ~Command() = default;
     // Bytes of post-transform vertices its front end writes for its back end to read.
