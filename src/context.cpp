@@ -25,9 +25,6 @@ struct alignas(kCacheLine) OwnLine {
     T value{};
 };
 
-// A draw's post-transform vertices' room in a block, whole 64-byte lines.
-size_t post_bytes(size_t post_transform_bytes) { return (post_transform_bytes + kCacheLine - 1) / kCacheLine * kCacheLine; }
-
 // Stably sorts `items` by the key thread_of(item) < threads (a counting sort), and writes
 // where each key's run begins to `shares` (threads + 1 bounds).
 template <class T, class Key>
@@ -173,11 +170,11 @@ size_t Context::place_post_transform(Commands batch, std::span<const Recorded> r
     // writing), the same block batch after batch: a core writes over lines it wrote itself
     // (and mostly read back itself, Context::split_tiles). So each block has room for every
     // small draw of the batch. A big draw's, whose chunks every thread writes, go first in
-    // the first block, placed here.
+    // the first block, placed here. Each draw's take whole lines (Command::prepare's alignment).
     post_blocks_.resize(threads);
     size_t big = 0, small = 0;
     for (const WorkItem& item : items)
-        if (item.chunk == 0) (item.small ? small : big) += post_bytes(recorded[item.command].post_transform_bytes);
+        if (item.chunk == 0) (item.small ? small : big) += whole_cache_lines(recorded[item.command].post_transform_bytes);
     for (unsigned t = 0; t < threads; ++t) {
         PostBlock& b = post_blocks_[t];
         const size_t need = (t == 0 ? big : 0) + small;
@@ -187,7 +184,7 @@ size_t Context::place_post_transform(Commands batch, std::span<const Recorded> r
     for (const WorkItem& item : items) {
         if (item.chunk != 0 || item.small) continue;
         batch[item.command]->prepare(post_blocks_[0].memory.get() + at);
-        at += post_bytes(recorded[item.command].post_transform_bytes);
+        at += whole_cache_lines(recorded[item.command].post_transform_bytes);
     }
     return at;
 }
@@ -252,7 +249,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         Command& c = *batch[item.command];
         if (!item.small) return c.process_vertex_chunk(item.chunk, target);
         c.prepare(cursors[thread].value);
-        cursors[thread].value += post_bytes(c.post_transform_bytes());
+        cursors[thread].value += whole_cache_lines(c.post_transform_bytes());
         c.process_small(target, bins[thread]);
         c.finish_binning(target.grid);
         footprints[item.command] = footprint_of(c, target.grid);

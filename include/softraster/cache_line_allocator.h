@@ -19,6 +19,9 @@ namespace softraster {
 
 inline constexpr size_t kCacheLine = 64;
 
+// `bytes` rounded up to whole lines.
+inline constexpr size_t whole_cache_lines(size_t bytes) { return (bytes + kCacheLine - 1) / kCacheLine * kCacheLine; }
+
 template <class T>
 struct CacheLineAllocator {
     using value_type = T;
@@ -26,12 +29,9 @@ struct CacheLineAllocator {
     CacheLineAllocator() = default;
     template <class U>
     CacheLineAllocator(const CacheLineAllocator<U>&) {}
-    T* allocate(size_t n) { return static_cast<T*>(::operator new(whole_lines(n), kLine)); }
-    void deallocate(T* p, size_t n) { ::operator delete(p, whole_lines(n), kLine); }
+    T* allocate(size_t n) { return static_cast<T*>(::operator new(whole_cache_lines(n * sizeof(T)), kLine)); }
+    void deallocate(T* p, size_t n) { ::operator delete(p, whole_cache_lines(n * sizeof(T)), kLine); }
     bool operator==(const CacheLineAllocator&) const = default;
-
-private:
-    static size_t whole_lines(size_t n) { return (n * sizeof(T) + kCacheLine - 1) / kCacheLine * kCacheLine; }
 };
 
 }  // namespace softraster

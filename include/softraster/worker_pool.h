@@ -24,6 +24,8 @@
 #include <utility>
 #include <vector>
 
+#include "softraster/cache_line_allocator.h"
+
 namespace softraster {
 
 class WorkerPool {
@@ -60,7 +62,7 @@ public:
     // items of a share fewer to steal.
     template <class F>
     void parallel_for(size_t count, F&& fn, std::span<const uint32_t> shares = {}, size_t grain = 1) {
-        struct alignas(64) Isolated {
+        struct alignas(kCacheLine) Isolated {
             std::remove_cvref_t<F> fn;
         } const job{std::forward<F>(fn)};
         run(count, Job{&job, [](const void* j, size_t i, unsigned t) { static_cast<const Isolated*>(j)->fn(i, t); }}, shares, grain);
@@ -85,7 +87,7 @@ private:
     // A thread's share of the current loop, the indices [begin, end) packed as begin << 32 |
     // end, so that its owner (an index from the front) and thieves (half from the back) claim
     // with one compare-and-swap. One cache line each: the owner claims at every grain.
-    struct alignas(64) Share {
+    struct alignas(kCacheLine) Share {
         std::atomic<uint64_t> run{0};
     };
     std::unique_ptr<Share[]> shares_;
