@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "softraster/thread_vote.h"
+
 namespace softraster {
 namespace {
 
@@ -48,7 +50,7 @@ void for_each_marked_tile(const Footprint& fp, const TileGrid& grid, F&& f) {
 
 }  // namespace
 
-Context::Footprint Context::footprint_of(const Command& c, const TileGrid& grid) {
+Context::Footprint Context::footprint_of(const Command& c) {
     Footprint f;
     if (!c.binned()) {
         f.kind = Footprint::Kind::EveryTile;
@@ -57,13 +59,11 @@ Context::Footprint Context::footprint_of(const Command& c, const TileGrid& grid)
     if (c.tiles().count() > 64) return f;  // (Kind::AskCommand)
     f.kind = Footprint::Kind::Tiles;
     f.range = c.tiles();
-    for (int ty = f.range.y0, k = 0; ty < f.range.y1; ++ty)
-        for (int tx = f.range.x0; tx < f.range.x1; ++tx, ++k)
-            if (c.triangles_in_tile(grid.tile_index(tx, ty)) > 0) f.tiles |= uint64_t(1) << k;
+    f.tiles = c.tiles_with_triangles();
     return f;
 }
 
-void Context::list_commands_by_tile(Commands batch, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists) {
+void Context::list_commands_by_tile(size_t first_command, Commands batch, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists) {
     // A counting sort of (tile, command) pairs by tile, commands in draw order: a binned
     // command in the tiles where it has triangles, any other in every tile. A small draw's
     // tiles come from its footprint, the others' from the command itself.
@@ -85,17 +85,40 @@ void Context::list_commands_by_tile(Commands batch, std::span<const Footprint> f
     };
     std::vector<uint32_t>& first = lists.first;
     first.assign(tiles + 1, 0);
-    for (size_t i = 0; i < batch.size(); ++i) for_each_tile(i, [&](size_t t) { ++first[t + 1]; });
+    size_t everywhere = 0;  // commands drawn in every tile
+    for (size_t i = 0; i < batch.size(); ++i) {
+        everywhere += footprints[i].kind == Footprint::Kind::EveryTile;
+        for_each_tile(i, [&](size_t t) { ++first[t + 1]; });
+    }
     for (size_t t = 1; t <= tiles; ++t) first[t] += first[t - 1];
-    lists.commands.resize(first[tiles]);
-    std::vector<uint32_t> cursor(first.begin(), first.end() - 1);
-    for (size_t i = 0; i < batch.size(); ++i) for_each_tile(i, [&](size_t t) { lists.commands[cursor[t]++] = batch[i].get(); });
     lists.busy.clear();
     for (size_t t = 0; t < tiles; ++t)
         if (first[t + 1] > first[t]) lists.busy.push_back(uint32_t(t));
+    // With more than one thread, the bands are cut between the two passes, so that the second
+    // also votes: next time, each small draw's front end runs on the thread of most of its
+    // tiles (ties to the first), whose core then reads what it wrote.
+    const unsigned threads = pool_ ? pool_->size() : 1;
+    if (threads > 1) split_tiles(everywhere, grid, lists);
+    ThreadVote vote(threads);
+    lists.commands.resize(first[tiles]);
+    std::vector<uint32_t> cursor(first.begin(), first.end() - 1);
+    for (size_t i = 0; i < batch.size(); ++i) {
+        Command* const c = batch[i].get();
+        const Footprint& fp = footprints[i];
+        if (threads == 1 || fp.kind != Footprint::Kind::Tiles || fp.tiles == 0) {
+            for_each_tile(i, [&](size_t t) { lists.commands[cursor[t]++] = c; });
+            continue;
+        }
+        vote.start();
+        for_each_marked_tile(fp, grid, [&](size_t t) {
+            lists.commands[cursor[t]++] = c;
+            vote.add(tile_thread_[t]);
+        });
+        recorded_[first_command + i].thread = uint16_t(vote.winner());
+    }
 }
 
-void Context::split_tiles(size_t first, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists) {
+void Context::split_tiles(size_t everywhere, const TileGrid& grid, TileLists& lists) {
     // The busy tiles in runs of about equal (tile, draw) pairs, one run per thread: bands of
     // the screen, as alike from one execution to the next as the scene. In row order, but
     // column by column where the busy tiles are a strip at least twice as wide as tall (a
@@ -106,7 +129,6 @@ void Context::split_tiles(size_t first, std::span<const Footprint> footprints, c
     // it costs a tile next to nothing, and a frame's first batch would otherwise always look
     // like the whole screen.
     const unsigned threads = pool_->size();
-    const auto everywhere = size_t(std::count_if(footprints.begin(), footprints.end(), [](const Footprint& fp) { return fp.kind == Footprint::Kind::EveryTile; }));
     std::vector<uint32_t>& busy = lists.busy;
     auto drawn = [&](uint32_t tile) { return size_t(lists.first[tile + 1] - lists.first[tile]) - everywhere; };
     size_t pairs = 0;
@@ -127,16 +149,6 @@ void Context::split_tiles(size_t first, std::span<const Footprint> footprints, c
         tile_thread_[tile] = uint16_t(t);
         seen += weight(tile);
         while (t + 1 < threads && seen * threads >= total * (t + 1)) lists.shares[++t] = k + 1;
-    }
-    // Next time, each small draw's front end runs on the thread of most of its tiles (ties
-    // to the first), whose core then reads what it wrote.
-    std::vector<uint32_t> mine(threads);
-    for (size_t i = 0; i < footprints.size(); ++i) {
-        const Footprint& fp = footprints[i];
-        if (fp.kind != Footprint::Kind::Tiles || fp.tiles == 0) continue;
-        std::fill(mine.begin(), mine.end(), 0);
-        for_each_marked_tile(fp, grid, [&](size_t t) { ++mine[tile_thread_[t]]; });
-        recorded_[first + i].thread = uint16_t(std::max_element(mine.begin(), mine.end()) - mine.begin());
     }
 }
 
@@ -168,7 +180,7 @@ size_t Context::place_post_transform(Commands batch, std::span<const Recorded> r
     // another in the order it runs them (placed as each runs, execute_batch: a draw another
     // thread stole writes into the thief's block, not among the lines its planned thread is
     // writing), the same block batch after batch: a core writes over lines it wrote itself
-    // (and mostly read back itself, Context::split_tiles). So each block has room for every
+    // (and mostly read back itself, Context::list_commands_by_tile). So each block has room for every
     // small draw of the batch. A big draw's, whose chunks every thread writes, go first in
     // the first block, placed here. Each draw's take whole lines (Command::prepare's alignment).
     post_blocks_.resize(threads);
@@ -252,7 +264,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
         cursors[thread].value += whole_cache_lines(c.post_transform_bytes());
         c.process_small(target, bins[thread]);
         c.finish_binning(target.grid);
-        footprints[item.command] = footprint_of(c, target.grid);
+        footprints[item.command] = footprint_of(c);
     }, item_shares_, big_chunks == 0 ? small_draws_claimed(vertex_items.size(), small_bytes) : 1);
     parallel_for(pool_, bin_items.size(), [batch, target, items = bin_items.data(), bins = bin_memory_.data()](size_t k, unsigned thread) {
         batch[items[k].command]->bin_primitive_chunk(items[k].chunk, target, bins[thread]);
@@ -262,8 +274,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
             batch[i]->finish_binning(target.grid);
             footprints[i] = Footprint{};  // (Kind::AskCommand)
         }
-    list_commands_by_tile(batch, footprints, target.grid, lists);
-    if (threads > 1) split_tiles(first, footprints, target.grid, lists);
+    list_commands_by_tile(first, batch, footprints, target.grid, lists);
 
     // The back end: one thread per tile at a time, the tile's commands in draw order, so the
     // framebuffer needs no locks. Runs of opaque draws with heavy overdraw are drawn in two

@@ -145,7 +145,7 @@ private:
         TileRange range;
         uint64_t tiles = 0;  // bit k: local tile k of range
     };
-    static Footprint footprint_of(const Command& c, const TileGrid& grid);
+    static Footprint footprint_of(const Command& c);
     // Each tile's commands of a batch in draw order: tile t's are commands[first[t] ..
     // first[t + 1]). Built after binning, so a tile visits only the draws that touch it;
     // `busy` lists the tiles that have any, the back end's work items, and `shares` where each
@@ -158,9 +158,12 @@ private:
     };
     using Commands = std::span<const std::unique_ptr<Command>>;
     void execute_batch(size_t first, size_t size, const DrawTarget& target);  // commands [first, first + size)
-    // (`footprints`: the batch's part of footprints_; `lists`: its tile lists, execute_batch.)
-    void list_commands_by_tile(Commands batch, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists);
-    void split_tiles(size_t first, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists);
+    // (`footprints`: the batch's part of footprints_; `lists`: its tile lists, execute_batch;
+    // `first`: the batch's first command, whose small draws' threads it votes.)
+    void list_commands_by_tile(size_t first, Commands batch, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists);
+    // With more than one thread, between the listing's passes: the busy tiles' bands
+    // (tile_thread_, lists.shares), `everywhere` of the batch's commands drawn in every tile.
+    void split_tiles(size_t everywhere, const TileGrid& grid, TileLists& lists);
     // An item of a front-end phase: a small draw, or a chunk of a bigger one. It carries all
     // the thread that takes it reads of the batch's lists, written on the calling thread.
     struct WorkItem {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <random>
 
+#include "softraster/thread_vote.h"
 #include "test_support.h"
 
 using namespace softraster;
@@ -102,9 +103,28 @@ TEST(Batches, CloseAtTheirDrawsAndBytes) {
     EXPECT_EQ(ctx.batches(), 60u);
 }
 
+// A small draw's vote (Context::list_commands_by_tile): the thread of most of its tiles,
+// ties to the lowest, each draw counted afresh.
+TEST(Batches, AVoteGoesToTheThreadOfMostTilesTiesToTheLowest) {
+    ThreadVote vote(3);
+    vote.start();
+    EXPECT_EQ(vote.winner(), 0u);  // no tiles
+    for (unsigned t : {2u, 1u, 2u}) vote.add(t);
+    EXPECT_EQ(vote.winner(), 2u);
+    vote.start();  // the last draw's two tiles of thread 2 no longer count
+    for (unsigned t : {2u, 1u, 1u}) vote.add(t);
+    EXPECT_EQ(vote.winner(), 1u);
+    vote.start();
+    for (unsigned t : {2u, 1u}) vote.add(t);  // a tie, whichever came first
+    EXPECT_EQ(vote.winner(), 1u);
+    vote.start();
+    for (unsigned t : {1u, 2u, 0u, 2u, 1u, 0u}) vote.add(t);
+    EXPECT_EQ(vote.winner(), 0u);
+}
+
 // With more than one thread, each batch's tiles go to the threads in bands and a small
 // draw's front end, from the second execution on, to the thread of its band
-// (Context::split_tiles). The picture is the same on any number of threads, execution after
+// (Context::split_tiles, and the votes below). The picture is the same on any number of threads, execution after
 // execution: scattered small draws, a small draw over more tiles than a footprint holds
 // (64), a draw too big to be small (two chunks of vertices), and a clear, in batches of
 // several sizes, and batches of draws along a strip (cut into bands column by column).

@@ -80,6 +80,14 @@ public:
         if (k < 0) return 0;
         return one_bin_begin_ ? one_bin_begin_[k + 1] - one_bin_begin_[k] : tile_triangles_[size_t(k)];
     }
+    // Bit k set where local tile k of tiles() has triangles (for a range of up to 64 tiles:
+    // a small draw's footprint, Context::footprint_of).
+    uint64_t tiles_with_triangles() const {
+        uint64_t bits = 0;
+        for (int k = 0, n = std::min(range_.count(), 64); k < n; ++k)
+            if (one_bin_begin_ ? one_bin_begin_[k + 1] > one_bin_begin_[k] : tile_triangles_[size_t(k)] > 0) bits |= uint64_t(1) << k;
+        return bits;
+    }
     // Pixels of the tile this command's triangles cover, summed (each triangle's area, at
     // most its bounds within the tile): an estimate of the overdraw.
     double covered_area(int tile) const {
