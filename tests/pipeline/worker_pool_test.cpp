@@ -159,7 +159,11 @@ TEST(WorkerPool, GivenSharesEachThreadStartsOnItsOwn) {
 // only unclaimed ones. The caller's share is all 24 items, claimed 4 at a time, and its
 // first item waits until the worker has run every item it could take: the caller then has
 // run exactly its first claim, 0 to 3, and the worker the other 20. (Claimed one at a time,
-// the worker takes 1 to 23 and the caller runs 0 only.) A grain of 0 is refused.
+// the worker takes 1 to 23 and the caller runs 0 only.) The worker's first item waits for the
+// caller's: the worker may steal the back half before the caller's first claim, but not more
+// (with the caller's thread descheduled right after it opened the loop, as on a machine busy
+// with the rest of the suite, the worker could take more, and the test failed once so).
+// A grain of 0 is refused.
 TEST(WorkerPool, AThreadClaimsItsGrainAtATime) {
     WorkerPool pool(2);
     constexpr size_t kCount = 24, kGrain = 4;
@@ -167,12 +171,20 @@ TEST(WorkerPool, AThreadClaimsItsGrainAtATime) {
     for (int loop = 0; loop < 3; ++loop) {
         std::vector<std::vector<size_t>> order(2);  // each thread writes only its own
         std::atomic<size_t> by_worker{0};
-        std::atomic<bool> timed_out{false};
+        std::atomic<bool> timed_out{false}, caller_started{false};
         pool.parallel_for(kCount, [&](size_t i, unsigned thread) {
             order[thread].push_back(i);
-            if (thread == 1) by_worker.fetch_add(1);
-            if (thread != 0 || i != 0) return;
             const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+            if (thread == 1) {
+                while (!caller_started.load())
+                    if (std::chrono::steady_clock::now() > until) {
+                        timed_out = true;
+                        return;
+                    }
+                by_worker.fetch_add(1);
+            }
+            if (thread != 0 || i != 0) return;
+            caller_started = true;
             while (by_worker.load() < kCount - kGrain) {
                 if (std::chrono::steady_clock::now() > until) {
                     timed_out = true;
