@@ -188,14 +188,13 @@ size_t Context::place_post_transform(Commands batch, std::span<const Recorded> r
     for (const WorkItem& item : items)
         if (item.chunk == 0) (item.small ? small : big) += whole_cache_lines(recorded[item.command].post_transform_bytes);
     for (unsigned t = 0; t < threads; ++t) {
-        PostBlock& b = post_blocks_[t];
         const size_t need = (t == 0 ? big : 0) + small;
-        if (need > b.size) b = {std::unique_ptr<std::byte[], AlignedDelete>(static_cast<std::byte*>(::operator new(need, std::align_val_t(kCacheLine)))), need};
+        if (need > post_blocks_[t].size()) post_blocks_[t] = CacheLineBlock(need);
     }
     size_t at = 0;
     for (const WorkItem& item : items) {
         if (item.chunk != 0 || item.small) continue;
-        batch[item.command]->prepare(post_blocks_[0].memory.get() + at);
+        batch[item.command]->prepare(post_blocks_[0].data() + at);
         at += whole_cache_lines(recorded[item.command].post_transform_bytes);
     }
     return at;
@@ -249,7 +248,7 @@ void Context::execute_batch(size_t first, size_t size, const DrawTarget& target)
     // Where each thread's next small draw's vertices go: its block, after the big draws' in
     // the first.
     std::vector<OwnLine<std::byte*>> cursors(threads);
-    for (unsigned t = 0; t < threads; ++t) cursors[t].value = post_blocks_[t].memory.get() + (t == 0 ? big_bytes : 0);
+    for (unsigned t = 0; t < threads; ++t) cursors[t].value = post_blocks_[t].data() + (t == 0 ? big_bytes : 0);
     // (The loops' functions hold copies of what they read, not references to this frame's
     // locals: every thread reads them at every index, and what the calling thread writes on
     // its stack while it runs its own items may share their lines: WorkerPool::parallel_for.)

@@ -13,6 +13,7 @@
 //     (docs/performance.md, "Scratch on lines of its own").
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <new>
 
 namespace softraster {
@@ -32,6 +33,25 @@ struct CacheLineAllocator {
     T* allocate(size_t n) { return static_cast<T*>(::operator new(whole_cache_lines(n * sizeof(T)), kLine)); }
     void deallocate(T* p, size_t n) { ::operator delete(p, whole_cache_lines(n * sizeof(T)), kLine); }
     bool operator==(const CacheLineAllocator&) const = default;
+};
+
+// A buffer of bytes on lines of its own, not initialized (a std::vector would zero them
+// each time it grew): the blocks of Context's post-transform vertices and of BinMemory,
+// written anew batch after batch and replaced by a bigger one when they no longer fit.
+class CacheLineBlock {
+public:
+    CacheLineBlock() = default;
+    explicit CacheLineBlock(size_t bytes)
+        : memory_(static_cast<std::byte*>(::operator new(whole_cache_lines(bytes), std::align_val_t(kCacheLine)))), size_(bytes) {}
+    std::byte* data() const { return memory_.get(); }
+    size_t size() const { return size_; }
+
+private:
+    struct Delete {
+        void operator()(std::byte* p) const { ::operator delete(p, std::align_val_t(kCacheLine)); }
+    };
+    std::unique_ptr<std::byte, Delete> memory_;
+    size_t size_ = 0;
 };
 
 }  // namespace softraster

@@ -199,14 +199,7 @@ private:
     size_t batches_ = 0;
     // The batch's post-transform vertices (Command::prepare), a block per thread
     // (place_post_transform), each as big as the most it has held.
-    struct AlignedDelete {
-        void operator()(std::byte* p) const { ::operator delete(p, std::align_val_t(kCacheLine)); }
-    };
-    struct PostBlock {
-        std::unique_ptr<std::byte[], AlignedDelete> memory;
-        size_t size = 0;
-    };
-    std::vector<PostBlock> post_blocks_;
+    std::vector<CacheLineBlock> post_blocks_;
     std::vector<BinMemory> bin_memory_;  // per thread: the batch's bins its front end wrote
 };
 
