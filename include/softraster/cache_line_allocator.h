@@ -36,8 +36,8 @@ struct CacheLineAllocator {
 };
 
 // A buffer of bytes on lines of its own, not initialized (a std::vector would zero them
-// each time it grew): the blocks of Context's post-transform vertices and of BinMemory,
-// written anew batch after batch and replaced by a bigger one when they no longer fit.
+// each time it grew): the blocks of Context's post-transform vertices, written anew batch
+// after batch and replaced by a bigger one when they no longer fit.
 class CacheLineBlock {
 public:
     CacheLineBlock() = default;

@@ -186,8 +186,8 @@ TEST(CacheLineAllocator, TakesWholeLinesOfItsOwn) {
     }
 }
 
-// The blocks of a thread's bins (BinMemory) and of the post-transform vertices (Context) do
-// the same, their bytes not initialized. (glibc leaves a block aligned to a line room to the
+// The blocks of the post-transform vertices (Context) do the same, their bytes not
+// initialized. (glibc leaves a block aligned to a line room to the
 // end of its last line even unrounded; the rounding is for allocators that do not.)
 TEST(CacheLineAllocator, BlocksTakeWholeLinesOfTheirOwn) {
     for (size_t n = 1; n <= 1000; n += 13) {
