@@ -63,7 +63,7 @@ Context::Footprint Context::footprint_of(const Command& c) {
     return f;
 }
 
-void Context::list_commands_by_tile(size_t first_command, Commands batch, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists) {
+void Context::list_commands_by_tile(size_t first, Commands batch, std::span<const Footprint> footprints, const TileGrid& grid, TileLists& lists) {
     // A counting sort of (tile, command) pairs by tile, commands in draw order: a binned
     // command in the tiles where it has triangles, any other in every tile. A small draw's
     // tiles come from its footprint, the others' from the command itself.
@@ -83,25 +83,25 @@ void Context::list_commands_by_tile(size_t first_command, Commands batch, std::s
                 if (c.triangles_in_tile(t) > 0) f(size_t(t));
             }
     };
-    std::vector<uint32_t>& first = lists.first;
-    first.assign(tiles + 1, 0);
+    std::vector<uint32_t>& starts = lists.first;
+    starts.assign(tiles + 1, 0);
     size_t everywhere = 0;  // commands drawn in every tile
     for (size_t i = 0; i < batch.size(); ++i) {
         everywhere += footprints[i].kind == Footprint::Kind::EveryTile;
-        for_each_tile(i, [&](size_t t) { ++first[t + 1]; });
+        for_each_tile(i, [&](size_t t) { ++starts[t + 1]; });
     }
-    for (size_t t = 1; t <= tiles; ++t) first[t] += first[t - 1];
+    for (size_t t = 1; t <= tiles; ++t) starts[t] += starts[t - 1];
     lists.busy.clear();
     for (size_t t = 0; t < tiles; ++t)
-        if (first[t + 1] > first[t]) lists.busy.push_back(uint32_t(t));
+        if (starts[t + 1] > starts[t]) lists.busy.push_back(uint32_t(t));
     // With more than one thread, the bands are cut between the two passes, so that the second
     // also votes: next time, each small draw's front end runs on the thread of most of its
     // tiles (ties to the first), whose core then reads what it wrote.
     const unsigned threads = pool_ ? pool_->size() : 1;
     if (threads > 1) split_tiles(everywhere, grid, lists);
     ThreadVote vote(threads);
-    lists.commands.resize(first[tiles]);
-    std::vector<uint32_t> cursor(first.begin(), first.end() - 1);
+    lists.commands.resize(starts[tiles]);
+    std::vector<uint32_t> cursor(starts.begin(), starts.end() - 1);
     for (size_t i = 0; i < batch.size(); ++i) {
         Command* const c = batch[i].get();
         const Footprint& fp = footprints[i];
@@ -114,7 +114,7 @@ void Context::list_commands_by_tile(size_t first_command, Commands batch, std::s
             lists.commands[cursor[t]++] = c;
             vote.add(tile_thread_[t]);
         });
-        recorded_[first_command + i].thread = uint16_t(vote.winner());
+        recorded_[first + i].thread = uint16_t(vote.winner());
     }
 }
 
